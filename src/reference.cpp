@@ -1,0 +1,220 @@
+#include "kutlog/reference.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace kutlog::ref {
+namespace {
+
+[[noreturn]] void throw_invalid(const char* name, double value, const char* range) {
+  char shown[32];
+  std::snprintf(shown, sizeof shown, "%.17g", value);
+  throw std::invalid_argument(std::string("kutlog: ") + name + " = " + shown + " is invalid; " +
+                              name + " must be " + range);
+}
+
+void validate_exponent(double n) {
+  if (!std::isfinite(n) || !(n > 0)) throw_invalid("n", n, "finite and > 0");
+}
+
+double power_of_integer(double base, int exponent) {
+  double result = 1.0;
+  for (; exponent > 0; exponent >>= 1, base *= base)
+    if (exponent & 1) result *= base;
+  return result;
+}
+
+// The data rule shared by the lobes: NaN passes through, t <= 0 is below the horizon, and t
+// above 1 (rounding of normalized vectors) is the peak. Returns true and sets `out` when the
+// rule decides; otherwise t is in (0, 1).
+bool apply_data_rule(double t, double& out) {
+  if (std::isnan(t)) {
+    out = t;
+    return true;
+  }
+  if (t <= 0) {
+    out = 0;
+    return true;
+  }
+  if (t >= 1) {
+    out = 1;
+    return true;
+  }
+  return false;
+}
+
+// integral from 0 to G of sin(b*theta) d(theta) = (1 - cos(bG)) / b, written without the
+// cancellation of 1 - cos for small bG.
+double sine_integral_to(double b, double G) {
+  if (b == 0) return 0;
+  const double s = std::sin(0.5 * b * G);
+  return 2 * s * s / b;
+}
+
+}  // namespace
+
+void validate_parameters(double n, int k, double Q) {
+  validate_exponent(n);
+  if (k < 1 || k > kMaxK)
+    throw std::invalid_argument("kutlog: k = " + std::to_string(k) +
+                                " is invalid; k must be an integer in [1, " +
+                                std::to_string(kMaxK) + "]");
+  if (!std::isfinite(Q) || !(Q > 0 && Q < 1)) throw_invalid("Q", Q, "finite and in (0, 1)");
+}
+
+double blinn_phong(double t, double n) {
+  validate_exponent(n);
+  double decided;
+  if (apply_data_rule(t, decided)) return decided;
+  return std::pow(t, n);
+}
+
+double schlick(double t, double n) {
+  validate_exponent(n);
+  double decided;
+  if (apply_data_rule(t, decided)) return decided;
+  return t / (n - n * t + t);
+}
+
+namespace {
+double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+}  // namespace
+
+double blinn_cosine(const Vec3& normal, const Vec3& to_light, const Vec3& to_viewer) {
+  const Vec3 sum{to_light.x + to_viewer.x, to_light.y + to_viewer.y, to_light.z + to_viewer.z};
+  const double length = std::sqrt(dot(sum, sum));
+  return dot(normal, sum) / length;
+}
+
+double phong_cosine(const Vec3& normal, const Vec3& to_light, const Vec3& to_viewer) {
+  const double n_dot_l = dot(normal, to_light);
+  const Vec3 mirrored{2 * n_dot_l * normal.x - to_light.x, 2 * n_dot_l * normal.y - to_light.y,
+                      2 * n_dot_l * normal.z - to_light.z};
+  return dot(mirrored, to_viewer);
+}
+
+double acos_of_root(double Q, double m) {
+  const double one_minus_root = -std::expm1(std::log(Q) / m);
+  return 2 * std::asin(std::sqrt(0.5 * one_minus_root));
+}
+
+KutlogLobe::KutlogLobe(double n, int k, double Q) : n_(n), k_(k), Q_(Q) {
+  validate_parameters(n, k, Q);
+  anchor_angle_ = acos_of_root(Q, n);
+  c_ = acos_of_root(Q, k) / anchor_angle_;
+  cutoff_angle_ = (pi / 2) / c_;
+}
+
+double KutlogLobe::integration_limit() const { return std::min(cutoff_angle_, pi / 2); }
+
+double KutlogLobe::eval_angle(double x) const {
+  if (std::isnan(x)) return x;
+  x = std::fabs(x);
+  if (x >= cutoff_angle_ || x >= pi / 2) return 0;
+  const double scaled_cos = std::cos(c_ * x);
+  return scaled_cos > 0 ? power_of_integer(scaled_cos, k_) : 0;
+}
+
+double KutlogLobe::eval(double t) const {
+  double decided;
+  if (apply_data_rule(t, decided)) return decided;
+  return eval_angle(std::acos(t));
+}
+
+double KutlogLobe::integral() const {
+  // cos^k(u) = 2^-k sum_j C(k,j) cos((k-2j)u) and cos(theta) sin(theta) = sin(2 theta)/2;
+  // cos(a theta) sin(2 theta) = (sin((2+a) theta) + sin((2-a) theta)) / 2.
+  const double G = integration_limit();
+  double binomial_weight = std::ldexp(1.0, -k_);  // C(k,j) / 2^k
+  double sum = 0;
+  for (int j = 0; j <= k_; ++j) {
+    const double a = (k_ - 2 * j) * c_;
+    sum += binomial_weight * (sine_integral_to(2 + a, G) + sine_integral_to(2 - a, G));
+    binomial_weight = binomial_weight * (k_ - j) / (j + 1);
+  }
+  return sum / 4;
+}
+
+double KutlogLobe::integral_quadrature() const {
+  return integrate(
+      [this](double theta) { return eval_angle(theta) * std::cos(theta) * std::sin(theta); }, 0,
+      integration_limit());
+}
+
+double KutlogLobe::coef_exact() const { return 1 / (2 * pi * integral()); }
+
+double KutlogLobe::coef_fit() const {
+  const double n = n_, k = k_, Q = Q_;
+  const double low_q_fit = 0.608 * n * (Q - 0.193) / (2 * Q + 2 * k) + 0.161 * n + 0.284;
+  const double high_q_fit = 0.743 * Q * (-0.0133 * k * n + 0.167 * n) / k + 0.167 * n + 0.245;
+  if (Q <= 0.4) return low_q_fit;
+  if (Q >= 0.5) return high_q_fit;
+  const double weight = (Q - 0.4) / 0.1;
+  return (1 - weight) * low_q_fit + weight * high_q_fit;
+}
+
+double KutlogLobe::energy(double coef) const { return coef * 2 * pi * integral_quadrature(); }
+
+double kutlog_c(double n, int k, double Q) { return KutlogLobe(n, k, Q).c(); }
+double cutoff_angle(double n, int k, double Q) { return KutlogLobe(n, k, Q).cutoff_angle(); }
+double kutlog(double t, double n, int k, double Q) { return KutlogLobe(n, k, Q).eval(t); }
+double kutlog_angle(double x, double n, int k, double Q) {
+  return KutlogLobe(n, k, Q).eval_angle(x);
+}
+double kutlog_integral(double n, int k, double Q) { return KutlogLobe(n, k, Q).integral(); }
+double coef_exact(double n, int k, double Q) { return KutlogLobe(n, k, Q).coef_exact(); }
+double coef_fit(double n, int k, double Q) { return KutlogLobe(n, k, Q).coef_fit(); }
+
+double lafortune_willems_coef(double n) {
+  validate_exponent(n);
+  return (n + 2) / (2 * pi);
+}
+
+double blinn_phong_exact_coef(double n) {
+  validate_exponent(n);
+  return (n + 2) * (n + 4) / (8 * pi * (std::exp2(-n / 2) + n));
+}
+
+double blinn_phong_approx_coef(double n) {
+  validate_exponent(n);
+  return (n + 8) / (8 * pi);
+}
+
+double max_relative_error_in_epicenter(const std::function<double(double)>& lobe_of_angle,
+                                       double n, double zone_floor) {
+  validate_exponent(n);
+  const double zone_end = acos_of_root(zone_floor, n);
+  const auto relative_error = [&](double x) {
+    return std::fabs(lobe_of_angle(x) / std::pow(std::cos(x), n) - 1);
+  };
+  // A grid finds the peak's neighbourhood; golden-section search then refines it, since the
+  // relative error is smooth and unimodal between two grid points around its maximum.
+  constexpr int kGrid = 256;
+  int best = 0;
+  double best_error = -1;
+  for (int i = 0; i <= kGrid; ++i) {
+    const double e = relative_error(zone_end * i / kGrid);
+    if (e > best_error) best_error = e, best = i;
+  }
+  double lo = zone_end * std::max(best - 1, 0) / kGrid;
+  double hi = zone_end * std::min(best + 1, kGrid) / kGrid;
+  const double inv_phi = (std::sqrt(5.0) - 1) / 2;
+  double x1 = hi - inv_phi * (hi - lo), x2 = lo + inv_phi * (hi - lo);
+  double e1 = relative_error(x1), e2 = relative_error(x2);
+  for (int iteration = 0; iteration < 60; ++iteration) {
+    if (e1 > e2) {
+      hi = x2, x2 = x1, e2 = e1;
+      x1 = hi - inv_phi * (hi - lo), e1 = relative_error(x1);
+    } else {
+      lo = x1, x1 = x2, e1 = e2;
+      x2 = lo + inv_phi * (hi - lo), e2 = relative_error(x2);
+    }
+  }
+  return std::max({best_error, e1, e2});
+}
+
+}  // namespace kutlog::ref

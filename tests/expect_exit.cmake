@@ -1,0 +1,16 @@
+# Runs COMMAND (a ;-list) and checks its exit status is EXPECTED_STATUS; a failing status
+# must come with exactly one line on stderr.
+execute_process(COMMAND ${COMMAND} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT status STREQUAL EXPECTED_STATUS)
+  message(FATAL_ERROR "exit status ${status}, expected ${EXPECTED_STATUS}\nstdout: ${out}\nstderr: ${err}")
+endif()
+if(NOT EXPECTED_STATUS STREQUAL "0")
+  string(REGEX MATCHALL "\n" newlines "${err}")
+  list(LENGTH newlines lines)
+  if(NOT lines EQUAL 1)
+    message(FATAL_ERROR "stderr has ${lines} lines, expected one:\n${err}")
+  endif()
+  message(STATUS "stderr: ${err}")
+elseif(out STREQUAL "")
+  message(FATAL_ERROR "no output")
+endif()
