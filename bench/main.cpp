@@ -1,0 +1,72 @@
+// kutlog-bench: Google Benchmark over every arch this CPU supports, plus scalar std:: peers.
+//
+//   kutlog-bench [benchmark flags] [--kutlog_ratios]
+//
+// --kutlog_ratios prints, after the run, the throughput ratios of kutlog's kernels to their
+// peers, taken from this one run (medians when --benchmark_repetitions is given).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "inputs.hpp"
+#include "kutlog/dispatch.hpp"
+#include "ratio_report.hpp"
+
+namespace kutlog::bench {
+void register_benchmarks_sse4_1();
+void register_benchmarks_avx2();
+void register_benchmarks_avx512();
+
+namespace {
+template <class Function>
+void scalar_unary(benchmark::State& state, Function function, std::vector<float> x) {
+  std::vector<float> out(kArrayLength);
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < kArrayLength; ++i) out[i] = function(x[i]);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * std::int64_t(kArrayLength));
+}
+
+void register_scalar_benchmarks() {
+  const auto add = [](const char* name, auto function, std::vector<float> x) {
+    benchmark::RegisterBenchmark(name, [=](benchmark::State& state) { scalar_unary(state, function, x); });
+  };
+  add("math/acos/std/arch:scalar", [](float x) { return std::acos(x); }, uniform_inputs(-1, 1));
+  add("math/cos/std/arch:scalar", [](float x) { return std::cos(x); }, uniform_inputs(-3.14159f, 3.14159f));
+  add("math/exp/std/arch:scalar", [](float x) { return std::exp(x); }, uniform_inputs(-80, 80));
+  add("math/log/std/arch:scalar", [](float x) { return std::log(x); }, uniform_inputs(1e-3f, 1e3f));
+  add("math/pow/std/arch:scalar", [](float x) { return std::pow(x, 1000.0f); }, uniform_inputs(0, 1));
+}
+}  // namespace
+}  // namespace kutlog::bench
+
+int main(int argc, char** argv) {
+  using namespace kutlog;
+  bool print_ratios = false;
+  std::vector<char*> args;
+  for (int i = 0; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--kutlog_ratios") == 0) print_ratios = true;
+    else args.push_back(argv[i]);
+  }
+  int count = int(args.size());
+  benchmark::Initialize(&count, args.data());
+  if (benchmark::ReportUnrecognizedArguments(count, args.data())) return 2;
+
+  // Only archs this machine runs are registered: no benchmark can execute an illegal
+  // instruction.
+  if (arch_supported(Arch::avx512)) bench::register_benchmarks_avx512();
+  if (arch_supported(Arch::avx2)) bench::register_benchmarks_avx2();
+  if (arch_supported(Arch::sse4_1)) bench::register_benchmarks_sse4_1();
+  bench::register_scalar_benchmarks();
+
+  bench::RatioCollector collector;
+  benchmark::RunSpecifiedBenchmarks(&collector);
+  if (print_ratios) collector.print_ratios(stdout);
+  benchmark::Shutdown();
+  return 0;
+}

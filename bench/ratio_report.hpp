@@ -1,0 +1,33 @@
+// A Google Benchmark reporter that shows the run as usual (console or --benchmark_format) and
+// keeps each benchmark's throughput, so that kutlog-bench can print the ratios of one run.
+#pragma once
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace kutlog::bench {
+
+class RatioCollector : public benchmark::BenchmarkReporter {
+ public:
+  RatioCollector() : display_(benchmark::CreateDefaultDisplayReporter()) {}
+
+  bool ReportContext(const Context& context) override { return display_->ReportContext(context); }
+  void ReportRuns(const std::vector<Run>& runs) override;
+  void Finalize() override { display_->Finalize(); }
+
+  // items/s by benchmark name: the median of the repetitions if there were several.
+  const std::map<std::string, double>& throughput() const { return throughput_; }
+  // Prints the ratio tables (markdown) of the kernels measured in this run.
+  void print_ratios(std::FILE* out) const;
+
+ private:
+  std::unique_ptr<benchmark::BenchmarkReporter> display_;
+  std::map<std::string, double> throughput_;
+};
+
+}  // namespace kutlog::bench

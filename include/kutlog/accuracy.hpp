@@ -1,0 +1,41 @@
+// kutlog/accuracy.hpp: the one table of accuracy bounds of kutlog's kernels (SLEEF's model).
+//
+// `promised_ulp` is the contract in the kernel's name (_u10: 1.0 ULP). `max_ulp` is the
+// maximal error measured over every float of `domain` on every arch (kutlog-ulp --arch all),
+// rounded up: the tests assert both, so neither can drift from the code. README's accuracy
+// table is printed from here by kutlog-ulp --bounds.
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+namespace kutlog {
+
+struct AccuracyBound {
+  std::string_view kernel;  // the name in kutlog::simd and kutlog::math
+  std::string_view function;
+  std::string_view variant;  // "precise" or "fast"
+  double promised_ulp;
+  double max_ulp;
+  std::string_view domain;
+};
+
+inline constexpr AccuracyBound kAccuracyBounds[] = {
+    {"acos_u10", "acos", "precise", 1.0, 0.65, "[-1, 1]"},
+    {"cos_u10", "cos", "precise", 1.0, 0.81, "[-pi, pi]"},
+    {"cos_halfpi_u10", "cos_halfpi", "precise", 1.0, 0.81, "[0, pi/2]"},
+    {"exp_u10", "exp", "precise", 1.0, 0.77, "[-104, 89] (0 or inf beyond)"},
+    {"log_u10", "log", "precise", 1.0, 0.67, "(0, inf)"},
+    {"pow_u10", "pow", "precise", 1.0, 0.51,
+     "x in (0, 2^8], y in {1, 2, 5, 10, 50, 100, 500, 1000, 5000}; 10^7 random (x, y)"},
+};
+
+// The bound of a kernel by function name ("acos", ...) and variant, if kutlog has one.
+constexpr std::optional<AccuracyBound> find_accuracy_bound(std::string_view function,
+                                                           std::string_view variant = "precise") {
+  for (const AccuracyBound& bound : kAccuracyBounds)
+    if (bound.function == function && bound.variant == variant) return bound;
+  return std::nullopt;
+}
+
+}  // namespace kutlog

@@ -1,0 +1,374 @@
+// kutlog/simd/math.hpp: vectorized acos, cos, exp, log and pow on xsimd batches of float,
+// for users who inline them into their own batch code. The same templates serve kutlog's
+// dispatched array functions (kutlog/math.hpp).
+//
+// Every function carries a contract: what it computes, its domain, its maximal error, and what
+// it does with special values. The suffix is the promise, as in SLEEF: _u10 means at most 1.0
+// ULP, measured over every float of the domain by kutlog-ulp (the measured maxima are in
+// kutlog/accuracy.hpp, the one table of bounds, which the tests assert). ULP errors are
+// fractional, against the exact result.
+//
+// How the bound is reached: each float kernel (acos, cos, exp, log) ends in one rounding of a
+// sum hi + tail, where hi is formed exactly (Fast2Sum / exact products, kutlog/simd/
+// float_ops.hpp) and tail is small, so the error is 0.5 ULP plus a small multiple of tail's
+// relative error. pow evaluates log and exp in double lanes and rounds once to float, which
+// also makes subnormal and overflowing results come out right.
+//
+// Precondition for the bounds: round-to-nearest, no flush-to-zero of inputs (DAZ) or results
+// (FTZ), and no FMA contraction of these templates by the compiler (-ffp-contract=off).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <xsimd/xsimd.hpp>
+
+#include "kutlog/simd/float_ops.hpp"
+
+namespace kutlog::simd {
+
+namespace constants {
+// Polynomial cores, lowest degree first; fitted by tools/fit/fit_polynomials.py.
+// asin(s) = s + s*z*P(z), z = s^2 in [0, 1/4].
+inline constexpr std::array<float, 6> kAsin = {1.666666567e-01f, 7.500094175e-02f,
+                                               4.459940270e-02f, 3.110066243e-02f,
+                                               1.714923792e-02f, 3.369084746e-02f};
+// sin(r) = r + r*u*S(u), cos(r) = 1 - u/2 + u^2*C(u), u = r^2 in [0, (pi/4)^2].
+inline constexpr std::array<float, 4> kSin = {-1.666666716e-01f, 8.333331905e-03f,
+                                              -1.984008704e-04f, 2.724992555e-06f};
+inline constexpr std::array<float, 4> kCos = {4.166666791e-02f, -1.388888806e-03f,
+                                              2.480059993e-05f, -2.730095900e-07f};
+// exp(r) = 1 + r + r^2*E(r), |r| <= ln(2)/2.
+inline constexpr std::array<float, 6> kExp = {5.000000000e-01f, 1.666666716e-01f,
+                                              4.166646674e-02f, 8.333310485e-03f,
+                                              1.393364160e-03f, 1.989098091e-04f};
+// log(1+f) = f - f^2/2 + f^3*L(f), f in [sqrt(1/2) - 1, sqrt(2) - 1].
+inline constexpr std::array<float, 11> kLog = {
+    3.333333433e-01f,  -2.500000000e-01f, 1.999997348e-01f,  -1.666671932e-01f,
+    1.428788602e-01f,  -1.249992773e-01f, 1.104825065e-01f,  -9.931553155e-02f,
+    9.804564714e-02f,  -9.727659076e-02f, 5.555094406e-02f};
+// Double cores of pow: log(m) = 2s + s*z*A(z), s = (m-1)/(m+1), z = s^2 <= 0.0295;
+// exp(r) = 1 + r + r^2*E(r), |r| <= ln(2)/2.
+// Their errors enter t = y log x scaled down (by z <= 0.03 and r^2 <= 0.12): 2^-35.8 and
+// 2^-32.5 relative, against the 2^-24 of a float ulp.
+inline constexpr std::array<double, 4> kPowLog = {
+    6.66666665544970893e-01, 4.00001218398061242e-01, 2.85508208159606647e-01,
+    2.33304672163038351e-01};
+inline constexpr std::array<double, 6> kPowExp = {
+    5.00000001345772715e-01, 1.66666666816142561e-01, 4.16664650060400502e-02,
+    8.33331093444886900e-03, 1.39336410319867011e-03, 1.98909808697503266e-04};
+
+// pi/2 and pi as float + float; pi/2 also in three parts whose products by |n| <= 2 are exact.
+inline constexpr float kHalfPiHi = 1.57079637e+00f, kHalfPiLo = -4.37113883e-08f;
+inline constexpr float kHalfPiLo2 = -1.71512451e-15f;  // pi/2 - kHalfPiHi - kHalfPiLo
+inline constexpr float kPiHi = 3.14159274e+00f, kPiLo = -8.74227766e-08f;
+inline constexpr float kTwoOverPi = 6.36619747e-01f;
+// ln 2 = kLn2Hi + kLn2Lo; kLn2Hi has 15 significant bits, so k * kLn2Hi is exact for |k| < 2^9.
+inline constexpr float kLn2Hi = 6.93145752e-01f, kLn2Lo = 1.42860677e-06f;
+inline constexpr float kLog2e = 1.44269502e+00f;
+inline constexpr std::int32_t kSqrtHalfBits = 0x3f3504f3;  // bits of sqrt(1/2)
+inline constexpr float kSmallestNormal = 1.17549435e-38f;  // 2^-126
+inline constexpr float kTwoTo23 = 8388608.0f;
+}  // namespace constants
+
+namespace detail {
+// 0 where |x| < threshold, else x: a select, no arithmetic on the tiny values. Kernels use it
+// where the result for tiny x is that for 0, so that no lane computes a subnormal
+// intermediate (each costs a microcode assist of ~100 cycles on many x86 cores).
+template <class Arch>
+inline floats<Arch> zero_if_below(floats<Arch> x, float threshold) {
+  return xsimd::select(xsimd::abs(x) < floats<Arch>(threshold), floats<Arch>(0.0f), x);
+}
+}  // namespace detail
+
+// ---- acos ---------------------------------------------------------------------------------
+// acos_u10(x): arc cosine, in [0, pi].
+//   Domain: [-1, 1]. Max error: 1.0 ULP (measured over every float of the domain).
+//   Special values: acos(1) = +0, acos(-1) = pi (rounded), |x| > 1 and NaN give NaN.
+// Method: |x| <= 1/2: pi/2 - asin(x); x > 1/2: 2 asin(s); x < -1/2: pi - 2 asin(s), with
+// s = sqrt((1 - |x|) / 2) corrected by its exact residual, asin(s) = s + s z P(z); the constant
+// and the leading term are added by Fast2Sum so that one rounding ends the computation.
+template <class Arch>
+inline floats<Arch> acos_u10(floats<Arch> input) {
+  using F = floats<Arch>;
+  namespace c = constants;
+  // For |x| < 2^-26, acos(x) = pi/2 - x rounds to float(pi/2), which x = 0 gives too; zeroing
+  // such x keeps x*x from underflowing, which costs a microcode assist on many x86 cores.
+  const F x = detail::zero_if_below(input, 0x1p-26f);
+  const F ax = xsimd::abs(x);
+  const F sign = x ^ ax;  // the sign bit of x
+  const auto large = ax > F(0.5f);
+  // z = s^2 exactly: (1 - |x|) is exact for |x| in [1/2, 1] (Sterbenz) and halving is exact.
+  const F z = xsimd::select(large, neg_mul_add(ax, F(0.5f), F(0.5f)), x * x);
+  const F root = xsimd::sqrt(z);
+  const F s = xsimd::select(large, root, ax);
+  // sqrt rounds s by up to half an ulp, which acos would inherit whole; add the residual
+  // (z - s^2) / (2s) back, needed to only a few bits (an approximate reciprocal suffices;
+  // the tiny addend keeps root = 0 from making 0 * inf).
+  F residual;
+  if constexpr (has_fused_fma<Arch>) {
+    residual = neg_mul_add(root, root, z);
+  } else {
+    const Pair<F> square = two_product(root, root);
+    residual = (z - square.hi) - square.lo;
+  }
+  const F s_lo = xsimd::select(
+      large, residual * xsimd::reciprocal(mul_add(root, F(2.0f), F(0x1p-100f))), F(0.0f));
+  // acos(x) = A + factor * asin(s): factor = 2 sgn(x) if |x| > 1/2, else -sgn(x); A = pi/2 if
+  // |x| <= 1/2, else 0 or pi by the sign of x. A_lo / A_hi is the same for pi/2 and pi.
+  const F factor = xsimd::select(large, F(2.0f), F(-1.0f)) ^ sign;
+  const F constant_hi = xsimd::select(large, xsimd::select(x < F(0.0f), F(c::kPiHi), F(0.0f)),
+                                      F(c::kHalfPiHi));
+  const F constant_lo = constant_hi * F(c::kHalfPiLo / c::kHalfPiHi);
+  const F asin_tail = mul_add(s * z, horner(z, c::kAsin), s_lo);
+  const Pair<F> head = fast_two_sum(constant_hi, factor * s);  // |constant| >= |factor s|
+  return head.hi + mul_add(factor, asin_tail, head.lo + constant_lo);
+}
+
+// ---- cos ----------------------------------------------------------------------------------
+namespace detail {
+// cos(x) and the quadrant of x, for |x| <= pi: x = n pi/2 + r, |r| <= pi/4, r = r_hi + r_lo.
+template <class Arch>
+struct Reduced {
+  floats<Arch> r_hi, r_lo, n;
+};
+template <class Arch>
+inline Reduced<Arch> reduce_half_pi(floats<Arch> x) {
+  using F = floats<Arch>;
+  namespace c = constants;
+  const F n = xsimd::nearbyint(x * F(c::kTwoOverPi));
+  // n * kHalfPiHi and n * kHalfPiLo are exact (|n| <= 2), x - n * kHalfPiHi is exact
+  // (Sterbenz, or both are multiples of ulp(x) below 1), and |x - n kHalfPiHi| >= ulp(x) >
+  // |n kHalfPiLo| unless it is 0, so Fast2Sum applies.
+  const Pair<F> r = fast_two_diff(neg_mul_add(n, F(c::kHalfPiHi), x), n * F(c::kHalfPiLo));
+  return {r.hi, neg_mul_add(n, F(c::kHalfPiLo2), r.lo), n};
+}
+
+// sin(r) and cos(r) for r = r_hi + r_lo, |r| <= pi/4, each ending in one rounding.
+template <class Arch>
+inline floats<Arch> sin_reduced(floats<Arch> r_hi, floats<Arch> r_lo, floats<Arch> u) {
+  using F = floats<Arch>;
+  // sin(r_hi + r_lo) = sin(r_hi) + r_lo cos(r_hi), cos(r_hi) ~ 1 - u/2.
+  const F tail = mul_add(r_lo, neg_mul_add(F(0.5f), u, F(1.0f)),
+                            r_hi * u * horner(u, constants::kSin));
+  return r_hi + tail;
+}
+template <class Arch>
+inline floats<Arch> cos_reduced(floats<Arch> r_hi, floats<Arch> r_lo, floats<Arch> u) {
+  using F = floats<Arch>;
+  // 1 - r^2/2 with r^2/2 split exactly, then cos(r_hi + r_lo) = cos(r_hi) - r_lo sin(r_hi).
+  const Pair<F> half_square = two_product(r_hi, r_hi * F(0.5f));
+  const Pair<F> head = fast_two_diff(F(1.0f), half_square.hi);
+  const F tail = mul_add(u * u, horner(u, constants::kCos), head.lo - half_square.lo) -
+                 r_lo * r_hi;
+  return head.hi + tail;
+}
+}  // namespace detail
+
+// cos_u10(x): cosine.
+//   Domain: [-pi, pi] (float(pi) included). Max error: 1.0 ULP (measured over every float of
+//   the domain).
+//   Special values: cos(+-0) = 1; |x| > float(pi), +-inf and NaN give NaN (outside the domain
+//   the reduction would lose accuracy silently; NaN says so).
+template <class Arch>
+inline floats<Arch> cos_u10(floats<Arch> x) {
+  using F = floats<Arch>;
+  // cos is even: reduce |x| = n pi/2 + r, n in {0, 1, 2}. cos(x) rounds to 1 for |x| < 2^-13.
+  const F ax = xsimd::abs(x);
+  const detail::Reduced<Arch> reduced =
+      detail::reduce_half_pi(xsimd::select(ax < F(0x1p-13f), F(0.0f), ax));
+  const F u = reduced.r_hi * reduced.r_hi;
+  const F sin_r = detail::sin_reduced(reduced.r_hi, reduced.r_lo, u);
+  const F cos_r = detail::cos_reduced(reduced.r_hi, reduced.r_lo, u);
+  // n = 0: cos r; n = 1: cos(pi/2 + r) = -sin r; n = 2: cos(pi + r) = -cos r.
+  const F result = xsimd::select(reduced.n == F(1.0f), sin_r, cos_r) ^
+                   xsimd::select(reduced.n > F(0.5f), F(-0.0f), F(0.0f));
+  return xsimd::select(ax <= F(constants::kPiHi), result,
+                       F(std::numeric_limits<float>::quiet_NaN()));
+}
+
+// cos_halfpi_u10(x): cosine on the first quadrant, the angles of a shading lobe.
+//   Domain: [0, pi/2] (float(pi/2) included). Max error: 1.0 ULP (measured over every float
+//   of the domain). Cheaper than cos_u10: no sign logic, no domain check.
+//   Special values: cos(0) = 1. Outside the domain: unspecified (finite for finite x with
+//   |x| <= pi); NaN gives NaN.
+template <class Arch>
+inline floats<Arch> cos_halfpi_u10(floats<Arch> x) {
+  using F = floats<Arch>;
+  const detail::Reduced<Arch> reduced = detail::reduce_half_pi(detail::zero_if_below(x, 0x1p-13f));
+  const F u = reduced.r_hi * reduced.r_hi;
+  const auto first_half = reduced.n == F(0.0f);
+  // n = 1: cos(pi/2 + r) = -sin(r) = sin(-r).
+  return xsimd::select(first_half, detail::cos_reduced(reduced.r_hi, reduced.r_lo, u),
+                       detail::sin_reduced(-reduced.r_hi, -reduced.r_lo, u));
+}
+
+// ---- exp ----------------------------------------------------------------------------------
+// exp_u10(x): e^x.
+//   Domain: every float. Max error: 1.0 ULP (measured over every float in [-104, 89]; outside,
+//   the result is 0 or +inf, exactly as rounding the true value gives).
+//   Special values: exp(+-0) = 1, exp(-inf) = +0, exp(+inf) = +inf, NaN gives NaN; results in
+//   the subnormal range are kept (one rounding), overflow gives +inf.
+template <class Arch>
+inline floats<Arch> exp_u10(floats<Arch> x) {
+  using F = floats<Arch>;
+  using I = ints<Arch>;
+  namespace c = constants;
+  // e^-104 < 2^-150 rounds to 0 and e^89 > FLT_MAX to inf; clamping keeps n in int range.
+  // e^x rounds to 1 for |x| < 2^-26.
+  const F clamped =
+      xsimd::min(xsimd::max(detail::zero_if_below(x, 0x1p-26f), F(-104.0f)), F(89.0f));
+  const F n = xsimd::nearbyint(clamped * F(c::kLog2e));
+  // x - n ln2 = (x - n kLn2Hi) - n kLn2Lo: the first difference is exact, the second product
+  // is not small against it when r ~ 0, so TwoSum renormalizes r = r_hi + r_lo.
+  const Pair<F> r = two_sum(neg_mul_add(n, F(c::kLn2Hi), clamped), -(n * F(c::kLn2Lo)));
+  // e^r = 1 + r + r^2 E(r), with 1 + r_hi split exactly and e^r_lo ~ 1 + r_lo (1 + r_hi).
+  const Pair<F> head = fast_two_sum(F(1.0f), r.hi);
+  const F tail =
+      mul_add(r.hi * r.hi, horner(r.hi, c::kExp), mul_add(r.lo, r.hi, r.lo) + head.lo);
+  const F mantissa = head.hi + tail;
+  // 2^n in two exact factors, so that only the last product rounds (into the subnormal
+  // range or to inf) and n up to 129 needs no out-of-range exponent.
+  const I k = xsimd::to_int(n);
+  const I k_half = k >> 1;
+  const F result = mantissa * exp2_of_int<Arch>(k_half) * exp2_of_int<Arch>(k - k_half);
+  return xsimd::select(xsimd::isnan(x), x, result);
+}
+
+// ---- log ----------------------------------------------------------------------------------
+namespace detail {
+// x = 2^e m, m in [sqrt(1/2), sqrt(2)), for positive finite x (subnormals included).
+template <class Arch>
+struct Decomposed {
+  floats<Arch> m, e;
+};
+// Subnormal x need a scaling first; kSubnormals = false skips it, for batches known to hold
+// none.
+template <bool kSubnormals, class Arch>
+inline Decomposed<Arch> decompose(floats<Arch> x) {
+  using F = floats<Arch>;
+  using I = ints<Arch>;
+  namespace c = constants;
+  if constexpr (kSubnormals) {
+    const auto subnormal = x < F(c::kSmallestNormal);
+    const Decomposed<Arch> d = decompose<false>(xsimd::select(subnormal, x * F(c::kTwoTo23), x));
+    return {d.m, d.e - xsimd::select(subnormal, F(23.0f), F(0.0f))};
+  } else {
+    const I bits = xsimd::bitwise_cast<I>(x);
+    const I e = (bits - I(c::kSqrtHalfBits)) >> 23;
+    return {xsimd::bitwise_cast<F>(bits - (e << 23)), xsimd::to_float(e)};
+  }
+}
+}  // namespace detail
+
+namespace detail {
+template <bool kSubnormals, class Arch>
+inline floats<Arch> log_positive(floats<Arch> x) {
+  using F = floats<Arch>;
+  namespace c = constants;
+  const Decomposed<Arch> d = decompose<kSubnormals>(x);
+  const F f = d.m - F(1.0f);  // exact
+  // log x = e ln2 + f - f^2/2 + f^3 L(f): e kLn2Hi is exact, both sums by Fast2Sum
+  // (|e kLn2Hi| >= ln2 > |f| unless e = 0; |f| > f^2/2), f^2/2 exactly as a pair.
+  const Pair<F> half_square = two_product(f, f * F(0.5f));
+  const Pair<F> with_f = fast_two_sum(d.e * F(c::kLn2Hi), f);
+  const Pair<F> head = fast_two_diff(with_f.hi, half_square.hi);
+  const F small = mul_add(d.e, F(c::kLn2Lo), (with_f.lo + head.lo) - half_square.lo);
+  return head.hi + mul_add(f * f * f, horner(f, c::kLog), small);
+}
+}  // namespace detail
+
+// log_u10(x): natural logarithm.
+//   Domain: every float > 0 (subnormals included). Max error: 1.0 ULP (measured over every
+//   positive float).
+//   Special values: log(1) = +0, log(+-0) = -inf, log(+inf) = +inf, x < 0 and NaN give NaN.
+template <class Arch>
+inline floats<Arch> log_u10(floats<Arch> x) {
+  using F = floats<Arch>;
+  const F inf(std::numeric_limits<float>::infinity());
+  // The common case, every lane normal and finite, skips the subnormal scaling and the
+  // special values.
+  if (xsimd::all(x >= F(constants::kSmallestNormal) && x < inf))
+    return detail::log_positive<false>(x);
+  return xsimd::select(x > F(0.0f) && x < inf, detail::log_positive<true>(x),
+                       xsimd::select(x == F(0.0f), -inf,
+                                     xsimd::select(x == inf, inf,
+                                                   F(std::numeric_limits<float>::quiet_NaN()))));
+}
+
+// ---- pow ----------------------------------------------------------------------------------
+namespace detail {
+inline constexpr double kLog2eDouble = 1.4426950408889634;
+// The log core in base 2: kPowLog times log2(e).
+inline constexpr std::array<double, 4> kPowLog2 = [] {
+  std::array<double, 4> scaled = constants::kPowLog;
+  for (double& coefficient : scaled) coefficient *= kLog2eDouble;
+  return scaled;
+}();
+
+// x^y for positive finite x (normal unless kSubnormals) and finite y, evaluated in double
+// lanes and rounded once to float.
+template <bool kSubnormals, class Arch>
+inline floats<Arch> pow_positive(floats<Arch> x, floats<Arch> y) {
+  using F = floats<Arch>;
+  using D = doubles<Arch>;
+  namespace c = constants;
+  const Decomposed<Arch> d = decompose<kSubnormals>(x);
+  const Pair<D> m = widen(d.m), e = widen(d.e), yd = widen(y);
+  const auto pow_half = [](D m, D e, D y) {
+    const D one(1.0), m_plus_one = m + one;  // exact
+    // 1 / (m + 1): an estimate with relative error e (|e| <= 2^-12), times 1 + e + e^2,
+    // leaves e^3 <= 2^-36.
+    D r = reciprocal_estimate(m_plus_one);
+    const D error = neg_mul_add(m_plus_one, r, one);
+    r = mul_add(r, mul_add(error, error, error), r);
+    const D s = (m - one) * r;  // (m - 1) / (m + 1)
+    const D z = s * s;
+    // log2 x = e + log2 m; then x^y = 2^t, t = y log2 x = n + f, n an integer, |f| <= 1/2
+    // (t - n is exact), 2^f = e^r with r = f ln2, |r| <= ln2 / 2.
+    const D log2_m = mul_add(s * z, horner(z, kPowLog2), s * D(2 * kLog2eDouble));
+    // Beyond [-200, 200] the float result is 0 or inf whatever t is; clamping also keeps the
+    // double result normal (an underflowing one costs a microcode assist).
+    const D t = xsimd::min(xsimd::max(y * (e + log2_m), D(-200.0)), D(200.0));
+    const D n = xsimd::nearbyint(t);
+    const D r_exp = (t - n) * D(0.69314718055994530942);
+    const D e_r = mul_add(r_exp * r_exp, horner(r_exp, c::kPowExp), r_exp) + one;
+    return scale_by_exp2(e_r, n);
+  };
+  return narrow(pow_half(m.hi, e.hi, yd.hi), pow_half(m.lo, e.lo, yd.lo));
+}
+}  // namespace detail
+
+// pow_u10(x, y): x^y for x >= 0.
+//   Domain: x >= 0 (subnormals included), y any float. Max error: 1.0 ULP (measured over
+//   every float x in (0, 1] and [1, 2^8] for y in {1, 2, 5, 10, 50, 100, 500, 1000, 5000},
+//   and over 10^7 random (x, y) pairs).
+//   Method: log x in double lanes (s = (m-1)/(m+1) through a refined reciprocal estimate, no
+//   division), y log x in double, e^t in double, then one rounding to float: subnormal
+//   results are kept and overflow gives +inf.
+//   Special values: pow(x, +-0) = 1 and pow(1, y) = 1 (NaN included); pow(+0, y > 0) = +0,
+//   pow(+0, y < 0) = +inf; pow(+inf, y > 0) = +inf, pow(+inf, y < 0) = +0; y = +-inf follows
+//   the limit; x < 0 and NaN give NaN (kutlog's lobes never raise a negative base); -0 is
+//   treated as +0.
+template <class Arch>
+inline floats<Arch> pow_u10(floats<Arch> x, floats<Arch> y) {
+  using F = floats<Arch>;
+  const F zero(0.0f), one(1.0f), inf(std::numeric_limits<float>::infinity());
+  // The common case, normal finite x and finite y in every lane, needs no special value.
+  if (xsimd::all(x >= F(constants::kSmallestNormal) && x < inf && xsimd::abs(y) < inf))
+    return detail::pow_positive<false>(x, y);
+  const F result = detail::pow_positive<true>(x, xsimd::select(xsimd::abs(y) < inf, y, zero));
+  const F nan(std::numeric_limits<float>::quiet_NaN());
+  const F at_zero = xsimd::select(y > zero, zero, inf);  // x = 0, y != 0
+  const F at_inf = xsimd::select(y > zero, inf, zero);   // x = inf, y != 0
+  const F below_one = xsimd::select(y > zero, zero, inf);  // x in (0, 1), y = +-inf
+  const F above_one = xsimd::select(y > zero, inf, zero);  // x > 1, y = +-inf
+  const F infinite_y = xsimd::select(x < one, below_one, above_one);
+  const F finite_x = xsimd::select(xsimd::abs(y) == inf, infinite_y, result);
+  const F special = xsimd::select(x == zero, at_zero, xsimd::select(x == inf, at_inf, nan));
+  const F general = xsimd::select(xsimd::isnan(y), nan,
+                                  xsimd::select(x > zero && x < inf, finite_x, special));
+  return xsimd::select(y == zero || x == one, one, general);
+}
+
+}  // namespace kutlog::simd

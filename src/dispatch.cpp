@@ -1,0 +1,177 @@
+// Run-time choice of the arch, and the array functions that go through it. Compiled with the
+// baseline flags only: nothing here may execute an instruction the CPU might lack.
+#include "kutlog/dispatch.hpp"
+
+#include <cpuid.h>
+
+#include <atomic>
+#include <cstdint>
+#include <cstdlib>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+
+#include "arch/kernel_table.hpp"
+#include "kutlog/math.hpp"
+
+namespace kutlog {
+namespace {
+
+struct CpuFeatures {
+  bool sse4_1 = false, avx2_fma = false, avx512 = false;
+};
+
+std::uint64_t read_xcr0() {
+  std::uint32_t low, high;
+  __asm__ volatile("xgetbv" : "=a"(low), "=d"(high) : "c"(0));
+  return (std::uint64_t(high) << 32) | low;
+}
+
+// CPUID says what the processor has; XGETBV says which register states the OS saves on a
+// context switch. An AVX instruction on an OS that does not save YMM registers faults, so
+// both must agree (xsimd 8.1 checks only CPUID).
+CpuFeatures detect_cpu_features() {
+  CpuFeatures features;
+  unsigned eax, ebx, ecx, edx;
+  if (!__get_cpuid(1, &eax, &ebx, &ecx, &edx)) return features;
+  features.sse4_1 = ecx & bit_SSE4_1;
+  const bool fma = ecx & bit_FMA, avx = ecx & bit_AVX, osxsave = ecx & bit_OSXSAVE;
+  if (!osxsave || !avx) return features;
+  const std::uint64_t xcr0 = read_xcr0();
+  const bool os_saves_ymm = (xcr0 & 0x6) == 0x6;      // SSE and AVX state
+  const bool os_saves_zmm = (xcr0 & 0xe6) == 0xe6;    // plus opmask, ZMM_Hi256, Hi16_ZMM
+  if (!__get_cpuid_count(7, 0, &eax, &ebx, &ecx, &edx)) return features;
+  features.avx2_fma = os_saves_ymm && fma && (ebx & bit_AVX2);
+  const std::uint32_t avx512_bits =
+      bit_AVX512F | bit_AVX512CD | bit_AVX512DQ | bit_AVX512BW | bit_AVX512VL;
+  features.avx512 = features.avx2_fma && os_saves_zmm && (ebx & avx512_bits) == avx512_bits;
+  return features;
+}
+
+const CpuFeatures& cpu_features() {
+  static const CpuFeatures features = detect_cpu_features();
+  return features;
+}
+
+std::string supported_list() {
+  std::string names;
+  for (Arch arch : supported_archs()) names += (names.empty() ? "" : ", ") + std::string(arch_name(arch));
+  return names.empty() ? "none" : names;
+}
+
+void require_supported(Arch arch, const char* who) {
+  if (!arch_supported(arch))
+    throw std::runtime_error(std::string("kutlog: ") + who + " arch " +
+                             std::string(arch_name(arch)) +
+                             " is not supported by this machine (supported: " + supported_list() +
+                             ")");
+}
+
+// The automatic choice: KUTLOG_ARCH if set, else the best supported arch. Computed once
+// (a function-local static is initialized thread-safely); if it throws, the next use retries.
+Arch automatic_arch() {
+  static const Arch arch = [] {
+    if (const char* forced = std::getenv("KUTLOG_ARCH"); forced && *forced) {
+      Arch named;
+      try {
+        named = parse_arch(forced);
+      } catch (const std::invalid_argument& error) {
+        throw std::runtime_error(std::string("kutlog: KUTLOG_ARCH: ") + error.what());
+      }
+      require_supported(named, "KUTLOG_ARCH names");
+      return named;
+    }
+    const std::vector<Arch> archs = supported_archs();
+    if (archs.empty())
+      throw std::runtime_error("kutlog: this CPU lacks SSE4.1, kutlog's baseline arch");
+    return archs.front();
+  }();
+  return arch;
+}
+
+constexpr int kNotForced = -1;
+std::atomic<int> forced_arch{kNotForced};
+
+const detail::KernelTable& active_table() {
+  switch (active_arch()) {
+    case Arch::avx512: return detail::kernel_table_avx512();
+    case Arch::avx2: return detail::kernel_table_avx2();
+    case Arch::sse4_1: break;
+  }
+  return detail::kernel_table_sse4_1();
+}
+
+}  // namespace
+
+std::string_view arch_name(Arch arch) {
+  switch (arch) {
+    case Arch::avx512: return "avx512";
+    case Arch::avx2: return "avx2";
+    case Arch::sse4_1: break;
+  }
+  return "sse4.1";
+}
+
+Arch parse_arch(std::string_view name) {
+  for (Arch arch : kCompiledArchs)
+    if (name == arch_name(arch)) return arch;
+  throw std::invalid_argument("kutlog: unknown arch '" + std::string(name) +
+                              "'; valid: avx512, avx2, sse4.1");
+}
+
+bool arch_supported(Arch arch) {
+  const CpuFeatures& features = cpu_features();
+  switch (arch) {
+    case Arch::avx512: return features.avx512;
+    case Arch::avx2: return features.avx2_fma;
+    case Arch::sse4_1: break;
+  }
+  return features.sse4_1;
+}
+
+std::vector<Arch> supported_archs() {
+  std::vector<Arch> archs;
+  for (Arch arch : kCompiledArchs)
+    if (arch_supported(arch)) archs.push_back(arch);
+  return archs;
+}
+
+Arch active_arch() {
+  const int forced = forced_arch.load(std::memory_order_relaxed);
+  return forced == kNotForced ? automatic_arch() : static_cast<Arch>(forced);
+}
+
+void force_arch(Arch arch) {
+  require_supported(arch, "forced");
+  forced_arch.store(static_cast<int>(arch), std::memory_order_relaxed);
+}
+
+void force_arch(std::string_view name) { force_arch(parse_arch(name)); }
+
+void reset_arch() { forced_arch.store(kNotForced, std::memory_order_relaxed); }
+
+namespace math {
+void acos_u10(const float* x, float* out, std::size_t count) {
+  active_table().acos_u10(x, out, count);
+}
+void cos_u10(const float* x, float* out, std::size_t count) {
+  active_table().cos_u10(x, out, count);
+}
+void cos_halfpi_u10(const float* x, float* out, std::size_t count) {
+  active_table().cos_halfpi_u10(x, out, count);
+}
+void exp_u10(const float* x, float* out, std::size_t count) {
+  active_table().exp_u10(x, out, count);
+}
+void log_u10(const float* x, float* out, std::size_t count) {
+  active_table().log_u10(x, out, count);
+}
+void pow_u10(const float* x, const float* y, float* out, std::size_t count) {
+  active_table().pow_u10(x, y, out, count);
+}
+void pow_u10(const float* x, float y, float* out, std::size_t count) {
+  active_table().pow_scalar_u10(x, y, out, count);
+}
+}  // namespace math
+
+}  // namespace kutlog

@@ -1,0 +1,236 @@
+#include "common/ulp.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <thread>
+
+#include "kutlog/math.hpp"
+
+namespace kutlog::tools {
+namespace {
+
+constexpr double kInfinite = std::numeric_limits<double>::infinity();
+
+// Floats ordered as integers: -0 -> 0x7fffffff, +0 -> 0x80000000, bigger values bigger keys.
+std::uint32_t order_key(float x) {
+  const auto bits = std::bit_cast<std::uint32_t>(x);
+  return bits & 0x80000000u ? 0xffffffffu - bits : bits + 0x80000000u;
+}
+float from_order_key(std::uint32_t key) {
+  return std::bit_cast<float>(key >= 0x80000000u ? key - 0x80000000u : 0xffffffffu - key);
+}
+
+constexpr std::size_t kChunk = 1 << 16;
+
+unsigned thread_count(unsigned requested) {
+  return requested ? requested : std::max(1u, std::thread::hardware_concurrency());
+}
+
+// Runs `work(chunk, thread)` for chunk in [0, chunks) over the threads, printing progress.
+void parallel_chunks(std::uint64_t chunks, unsigned threads,
+                     const std::function<void(std::uint64_t, unsigned)>& work,
+                     const std::string& progress_label) {
+  std::atomic<std::uint64_t> next{0}, done{0};
+  std::vector<std::thread> workers;
+  for (unsigned t = 0; t < threads; ++t)
+    workers.emplace_back([&, t] {
+      for (std::uint64_t chunk; (chunk = next.fetch_add(1)) < chunks; done.fetch_add(1))
+        work(chunk, t);
+    });
+  const bool show = !progress_label.empty() && isatty(STDERR_FILENO);
+  while (show && done.load() < chunks) {
+    std::fprintf(stderr, "\r%s %5.1f%%", progress_label.c_str(),
+                 100.0 * double(done.load()) / double(chunks));
+    std::this_thread::sleep_for(std::chrono::milliseconds(250));
+  }
+  for (std::thread& worker : workers) worker.join();
+  if (show) std::fprintf(stderr, "\r%s done  \n", progress_label.c_str());
+}
+
+// Per-thread statistics and profiles, merged after the sweep.
+class Accumulator {
+ public:
+  Accumulator(unsigned threads, const SweepOptions& options)
+      : stats_(threads), profiles_(options.profile ? threads : 0), options_(options) {
+    for (ErrorProfile& profile : profiles_) {
+      profile.worst_input.assign(options.profile_buckets, std::nanf(""));
+      profile.max_ulp.assign(options.profile_buckets, -1);
+    }
+  }
+  bool profiling() const { return !profiles_.empty(); }
+  // Adds one chunk's statistics, and (when profiling) each input's error at its position in
+  // [0, 1) along the sweep.
+  void add_chunk(unsigned thread, const ErrorStats& chunk) { stats_[thread].merge(chunk); }
+  void add_to_profile(unsigned thread, double error, float x, double position) {
+    ErrorProfile& profile = profiles_[thread];
+    const auto bucket = std::min<std::size_t>(std::size_t(position * double(profile.max_ulp.size())),
+                                              profile.max_ulp.size() - 1);
+    if (error > profile.max_ulp[bucket]) profile.max_ulp[bucket] = error, profile.worst_input[bucket] = x;
+  }
+  ErrorStats finish() {
+    ErrorStats total;
+    for (const ErrorStats& stats : stats_) total.merge(stats);
+    if (options_.profile) {
+      ErrorProfile& merged = *options_.profile;
+      merged = profiles_.front();
+      for (const ErrorProfile& profile : profiles_)
+        for (std::size_t b = 0; b < profile.max_ulp.size(); ++b)
+          if (profile.max_ulp[b] > merged.max_ulp[b])
+            merged.max_ulp[b] = profile.max_ulp[b], merged.worst_input[b] = profile.worst_input[b];
+    }
+    return total;
+  }
+
+ private:
+  std::vector<ErrorStats> stats_;
+  std::vector<ErrorProfile> profiles_;
+  SweepOptions options_;
+};
+
+constexpr float kPi = 3.14159274f, kHalfPi = 1.57079637f;  // float(pi), float(pi/2)
+
+}  // namespace
+
+double ulp_error_special(float computed, double reference) {
+  if (std::isnan(reference)) return std::isnan(computed) ? 0 : kInfinite;
+  if (std::isnan(computed)) return kInfinite;
+  if (std::isinf(computed)) return static_cast<float>(reference) == computed ? 0 : kInfinite;
+  if (std::isinf(reference)) return kInfinite;
+  if (reference == 0 && computed == 0)
+    return std::signbit(reference) == std::signbit(computed) ? 0 : kInfinite;
+  return std::fabs(double(computed) - reference) * 0x1p149;  // reference 0: subnormal ulp
+}
+
+void ErrorStats::merge(const ErrorStats& other) {
+  if (other.inputs && (other.max_ulp > max_ulp || inputs == 0))
+    max_ulp = other.max_ulp, worst_x = other.worst_x, worst_y = other.worst_y;
+  sum_ulp += other.sum_ulp;
+  inputs += other.inputs;
+}
+
+const std::vector<UnaryFunction>& unary_functions() {
+  static const std::vector<UnaryFunction> functions = {
+      {"acos", "acos_u10", &math::acos_u10, [](double x) { return std::acos(x); }, -1, 1,
+       "[-1, 1]"},
+      {"cos", "cos_u10", &math::cos_u10, [](double x) { return std::cos(x); }, -kPi, kPi,
+       "[-pi, pi]"},
+      {"cos_halfpi", "cos_halfpi_u10", &math::cos_halfpi_u10,
+       [](double x) { return std::cos(x); }, 0, kHalfPi, "[0, pi/2]"},
+      {"exp", "exp_u10", &math::exp_u10, [](double x) { return std::exp(x); }, -104, 89,
+       "[-104, 89]"},
+      {"log", "log_u10", &math::log_u10, [](double x) { return std::log(x); },
+       std::numeric_limits<float>::denorm_min(), std::numeric_limits<float>::max(),
+       "(0, FLT_MAX]"},
+  };
+  return functions;
+}
+
+const UnaryFunction* find_unary_function(std::string_view name) {
+  for (const UnaryFunction& function : unary_functions())
+    if (function.name == name) return &function;
+  return nullptr;
+}
+
+void for_each_float(float lo, float hi, unsigned threads,
+                    const std::function<void(std::uint32_t, std::size_t, unsigned)>& visit,
+                    const std::string& progress_label) {
+  const std::uint32_t first = order_key(lo), last = order_key(hi);
+  const std::uint64_t total = std::uint64_t(last) - first + 1;
+  const std::uint64_t chunks = (total + kChunk - 1) / kChunk;
+  parallel_chunks(
+      chunks, thread_count(threads),
+      [&](std::uint64_t chunk, unsigned thread) {
+        const std::uint64_t start = first + chunk * kChunk;
+        visit(std::uint32_t(start), std::size_t(std::min<std::uint64_t>(kChunk, last + 1 - start)),
+              thread);
+      },
+      progress_label);
+}
+
+namespace {
+// Sweeps every float in [lo, hi] through `compute` (array in, array out), comparing with
+// `reference`. A template, so that the per-element reference call is direct.
+template <class Compute, class Reference>
+ErrorStats sweep(float lo, float hi, const SweepOptions& options, Compute compute,
+                 Reference reference, float y) {
+  const unsigned threads = thread_count(options.threads);
+  Accumulator accumulator(threads, options);
+  const double first = order_key(lo), span = double(order_key(hi)) - first + 1;
+  for_each_float(
+      lo, hi, threads,
+      [&](std::uint32_t first_key, std::size_t count, unsigned thread) {
+        thread_local std::vector<float> in_buffer, out_buffer;
+        in_buffer.resize(count), out_buffer.resize(count);
+        float* const in = in_buffer.data();
+        float* const out = out_buffer.data();
+        for (std::size_t i = 0; i < count; ++i) in[i] = from_order_key(first_key + std::uint32_t(i));
+        compute(in, out, count);
+        ErrorStats chunk;
+        for (std::size_t i = 0; i < count; ++i) chunk.add(ulp_error(out[i], reference(in[i])), in[i], y);
+        accumulator.add_chunk(thread, chunk);
+        if (accumulator.profiling())
+          for (std::size_t i = 0; i < count; ++i)
+            accumulator.add_to_profile(thread, ulp_error(out[i], reference(in[i])), in[i],
+                                       (double(first_key) + double(i) - first) / span);
+      },
+      options.progress_label);
+  return accumulator.finish();
+}
+}  // namespace
+
+ErrorStats sweep_unary(const UnaryFunction& function, float lo, float hi,
+                       const SweepOptions& options) {
+  return sweep(
+      lo, hi, options, [&](const float* in, float* out, std::size_t n) { function.array(in, out, n); },
+      [reference = function.reference](float x) { return reference(x); }, std::nanf(""));
+}
+
+ErrorStats sweep_pow_exponent(float y, const SweepOptions& options) {
+  return sweep(
+      std::numeric_limits<float>::denorm_min(), 256.0f, options,
+      [y](const float* in, float* out, std::size_t n) { math::pow_u10(in, y, out, n); },
+      [y](float x) { return std::pow(double(x), double(y)); }, y);
+}
+
+ErrorStats sweep_pow_random(std::uint64_t pairs, std::uint64_t seed, const SweepOptions& options) {
+  const unsigned threads = thread_count(options.threads);
+  Accumulator accumulator(threads, options);
+  const std::uint64_t chunks = (pairs + kChunk - 1) / kChunk;
+  parallel_chunks(
+      chunks, threads,
+      [&](std::uint64_t chunk, unsigned thread) {
+        // One generator per chunk: the pairs do not depend on the thread count.
+        std::mt19937_64 engine(seed * 0x9e3779b97f4a7c15ull + chunk);
+        std::uniform_int_distribution<std::uint32_t> positive_bits(1, 0x7f7fffffu);
+        std::uniform_int_distribution<std::uint32_t> any_bits;
+        std::uniform_real_distribution<double> exponent_of_result(-104, 89);
+        const std::size_t count = std::size_t(std::min<std::uint64_t>(kChunk, pairs - chunk * kChunk));
+        thread_local std::vector<float> x, y, out;
+        x.resize(count), y.resize(count), out.resize(count);
+        for (std::size_t i = 0; i < count; ++i) {
+          x[i] = std::bit_cast<float>(positive_bits(engine));
+          if (i % 2 == 0 && x[i] != 1.0f) {
+            y[i] = float(exponent_of_result(engine) / std::log(double(x[i])));
+          } else {
+            do y[i] = std::bit_cast<float>(any_bits(engine));
+            while (!std::isfinite(y[i]));
+          }
+        }
+        math::pow_u10(x.data(), y.data(), out.data(), count);
+        ErrorStats chunk_stats;
+        for (std::size_t i = 0; i < count; ++i)
+          chunk_stats.add(ulp_error(out[i], std::pow(double(x[i]), double(y[i]))), x[i], y[i]);
+        accumulator.add_chunk(thread, chunk_stats);
+      },
+      options.progress_label);
+  return accumulator.finish();
+}
+
+}  // namespace kutlog::tools
