@@ -100,8 +100,8 @@ int main(int argc, char** argv) {
   app.add_option("--table", table_name, "Which table: 1, 2, fig4 or coef")
       ->required()
       ->check(CLI::IsMember({"1", "2", "fig4", "coef"}));
-  app.add_option("--format", format_name, "Output format: text or csv")
-      ->check(CLI::IsMember({"text", "csv"}))
+  app.add_option("--format", format_name, "Output format: text, csv or markdown")
+      ->check(CLI::IsMember({"text", "csv", "markdown"}))
       ->capture_default_str();
   app.add_option("--n", n_list, "coef table: exponents n, comma-separated, real > 0")
       ->delimiter(',')
@@ -114,9 +114,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
 
   return kutlog::tools::run_tool(app, argc, argv, [&] {
-    const auto format =
-        format_name == "csv" ? kutlog::tools::Format::csv : kutlog::tools::Format::text;
-    const bool text = format == kutlog::tools::Format::text;
+    const auto format = kutlog::tools::parse_format(format_name);
+    const bool text = format != kutlog::tools::Format::csv;
     if (table_name == "1") table1(text).print(format);
     if (table_name == "2") table2(text).print(format);
     if (table_name == "fig4") figure4().print(format);

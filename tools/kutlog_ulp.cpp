@@ -7,6 +7,7 @@
 #include "common/cli.hpp"
 #include "common/table.hpp"
 #include "common/ulp.hpp"
+#include "kutlog/accuracy.hpp"
 #include "kutlog/dispatch.hpp"
 
 namespace {
@@ -21,6 +22,30 @@ struct Row {
 std::string format_input(const ErrorStats& stats) {
   if (std::isnan(stats.worst_y)) return cell("%.9g", stats.worst_x);
   return cell("x=%.9g;y=%.9g", stats.worst_x, stats.worst_y);
+}
+
+// One row per kernel: its rows (every arch, every pow exponent set) merged.
+void print_summary(const std::vector<Row>& rows, const std::vector<std::string>& functions,
+                   Format format) {
+  Table table({"kernel", "domain", "promised_ulp", "bound_ulp", "measured_max_ulp", "worst_input",
+               "archs", "inputs"});
+  for (const std::string& function : functions) {
+    const auto bound = kutlog::find_accuracy_bound(function);
+    ErrorStats merged;
+    std::string archs;
+    for (const Row& row : rows) {
+      if (row.function.rfind(function, 0) != 0 || (row.function.size() > function.size() &&
+                                                    row.function[function.size()] != '['))
+        continue;
+      merged.merge(row.stats);
+      if (archs.find(row.arch) == std::string::npos) archs += (archs.empty() ? "" : " ") + row.arch;
+    }
+    table.add_row({std::string(bound->kernel), std::string(bound->domain),
+                   cell("%.1f", bound->promised_ulp), cell("%.2f", bound->max_ulp),
+                   cell("%.4f", merged.max_ulp), format_input(merged), archs,
+                   cell("%.3g", double(merged.inputs))});
+  }
+  table.print(format);
 }
 
 }  // namespace
@@ -43,9 +68,13 @@ int main(int argc, char** argv) {
   app.add_option("--arch", arch_names, "Archs, comma-separated (avx512, avx2, sse4.1), or all")
       ->delimiter(',')
       ->capture_default_str();
-  app.add_option("--format", format_name, "Output format: text or csv")
-      ->check(CLI::IsMember({"text", "csv"}))
+  app.add_option("--format", format_name, "Output format: text, csv or markdown")
+      ->check(CLI::IsMember({"text", "csv", "markdown"}))
       ->capture_default_str();
+  bool summary = false;
+  app.add_flag("--summary", summary,
+               "One row per kernel: the maximum over the archs (and pow's exponent sets), beside "
+               "the promise of its name and the bound of kutlog/accuracy.hpp");
   app.add_option("--pow-random", random_pairs, "Random (x, y) pairs for pow")->capture_default_str();
   app.add_option("--threads", threads, "Threads (0: every core)")->capture_default_str();
 
@@ -87,12 +116,17 @@ int main(int argc, char** argv) {
       }
     }
 
+    const Format format = parse_format(format_name);
+    if (summary) {
+      print_summary(rows, functions, format);
+      return 0;
+    }
     Table table({"function", "arch", "variant", "max_ulp", "worst_input", "mean_ulp", "inputs"});
     for (const Row& row : rows)
       table.add_row({row.function, row.arch, row.variant, cell("%.4f", row.stats.max_ulp),
                      format_input(row.stats), cell("%.4f", row.stats.mean_ulp()),
                      cell("%llu", (unsigned long long)row.stats.inputs)});
-    table.print(format_name == "csv" ? Format::csv : Format::text);
+    table.print(format);
     return 0;
   });
 }

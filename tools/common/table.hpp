@@ -8,7 +8,7 @@
 
 namespace kutlog::tools {
 
-enum class Format { text, csv };
+enum class Format { text, csv, markdown };
 
 class Table {
  public:
@@ -20,6 +20,12 @@ class Table {
     if (format == Format::csv) {
       print_csv_row(header_, out);
       for (const auto& row : rows_) print_csv_row(row, out);
+      return;
+    }
+    if (format == Format::markdown) {
+      print_markdown_row(header_, out);
+      print_markdown_row(std::vector<std::string>(header_.size(), "---"), out);
+      for (const auto& row : rows_) print_markdown_row(row, out);
       return;
     }
     std::vector<std::size_t> widths(header_.size());
@@ -37,6 +43,10 @@ class Table {
       std::fprintf(out, "%s%s", i ? "," : "", row[i].c_str());
     std::fputc('\n', out);
   }
+  static void print_markdown_row(const std::vector<std::string>& row, std::FILE* out) {
+    for (const std::string& cell : row) std::fprintf(out, "| %s ", cell.c_str());
+    std::fputs("|\n", out);
+  }
   static void print_text_row(const std::vector<std::string>& row,
                              const std::vector<std::size_t>& widths, std::FILE* out) {
     for (std::size_t i = 0; i < row.size(); ++i)
@@ -47,6 +57,11 @@ class Table {
   std::vector<std::string> header_;
   std::vector<std::vector<std::string>> rows_;
 };
+
+// The --format option's value ("text", "csv" or "markdown") as a Format.
+inline Format parse_format(const std::string& name) {
+  return name == "csv" ? Format::csv : name == "markdown" ? Format::markdown : Format::text;
+}
 
 // printf-style formatting of one cell.
 template <typename... Args>

@@ -38,23 +38,19 @@ inline constexpr std::array<float, 4> kSin = {-1.666666716e-01f, 8.333331905e-03
                                               -1.984008704e-04f, 2.724992555e-06f};
 inline constexpr std::array<float, 4> kCos = {4.166666791e-02f, -1.388888806e-03f,
                                               2.480059993e-05f, -2.730095900e-07f};
-// exp(r) = 1 + r + r^2*E(r), |r| <= ln(2)/2.
-inline constexpr std::array<float, 6> kExp = {5.000000000e-01f, 1.666666716e-01f,
-                                              4.166646674e-02f, 8.333310485e-03f,
-                                              1.393364160e-03f, 1.989098091e-04f};
 // log(1+f) = f - f^2/2 + f^3*L(f), f in [sqrt(1/2) - 1, sqrt(2) - 1].
 inline constexpr std::array<float, 11> kLog = {
     3.333333433e-01f,  -2.500000000e-01f, 1.999997348e-01f,  -1.666671932e-01f,
     1.428788602e-01f,  -1.249992773e-01f, 1.104825065e-01f,  -9.931553155e-02f,
     9.804564714e-02f,  -9.727659076e-02f, 5.555094406e-02f};
-// Double cores of pow: log(m) = 2s + s*z*A(z), s = (m-1)/(m+1), z = s^2 <= 0.0295;
+// Double cores of exp and pow: log(m) = 2s + s*z*A(z), s = (m-1)/(m+1), z = s^2 <= 0.0295;
 // exp(r) = 1 + r + r^2*E(r), |r| <= ln(2)/2.
 // Their errors enter t = y log x scaled down (by z <= 0.03 and r^2 <= 0.12): 2^-35.8 and
 // 2^-32.5 relative, against the 2^-24 of a float ulp.
 inline constexpr std::array<double, 4> kPowLog = {
     6.66666665544970893e-01, 4.00001218398061242e-01, 2.85508208159606647e-01,
     2.33304672163038351e-01};
-inline constexpr std::array<double, 6> kPowExp = {
+inline constexpr std::array<double, 6> kExpDouble = {
     5.00000001345772715e-01, 1.66666666816142561e-01, 4.16664650060400502e-02,
     8.33331093444886900e-03, 1.39336410319867011e-03, 1.98909808697503266e-04};
 
@@ -65,13 +61,14 @@ inline constexpr float kPiHi = 3.14159274e+00f, kPiLo = -8.74227766e-08f;
 inline constexpr float kTwoOverPi = 6.36619747e-01f;
 // ln 2 = kLn2Hi + kLn2Lo; kLn2Hi has 15 significant bits, so k * kLn2Hi is exact for |k| < 2^9.
 inline constexpr float kLn2Hi = 6.93145752e-01f, kLn2Lo = 1.42860677e-06f;
-inline constexpr float kLog2e = 1.44269502e+00f;
 inline constexpr std::int32_t kSqrtHalfBits = 0x3f3504f3;  // bits of sqrt(1/2)
 inline constexpr float kSmallestNormal = 1.17549435e-38f;  // 2^-126
 inline constexpr float kTwoTo23 = 8388608.0f;
 }  // namespace constants
 
 namespace detail {
+inline constexpr double kLog2eDouble = 1.4426950408889634;
+
 // 0 where |x| < threshold, else x: a select, no arithmetic on the tiny values. Kernels use it
 // where the result for tiny x is that for 0, so that no lane computes a subnormal
 // intermediate (each costs a microcode assist of ~100 cycles on many x86 cores).
@@ -204,35 +201,37 @@ inline floats<Arch> cos_halfpi_u10(floats<Arch> x) {
 }
 
 // ---- exp ----------------------------------------------------------------------------------
+namespace detail {
+// e^r for |r| <= ln2 / 2 + a little, relative error 2^-32.5 (double lanes).
+template <class Arch>
+inline doubles<Arch> exp_reduced(doubles<Arch> r) {
+  return mul_add(r * r, horner(r, constants::kExpDouble), r) + doubles<Arch>(1.0);
+}
+}  // namespace detail
+
 // exp_u10(x): e^x.
 //   Domain: every float. Max error: 1.0 ULP (measured over every float in [-104, 89]; outside,
 //   the result is 0 or +inf, exactly as rounding the true value gives).
-//   Special values: exp(+-0) = 1, exp(-inf) = +0, exp(+inf) = +inf, NaN gives NaN; results in
-//   the subnormal range are kept (one rounding), overflow gives +inf.
+//   Method: in double lanes, x = n ln2 + r, e^r by a polynomial, times 2^n, then one rounding
+//   to float (so results in the subnormal range are rounded once).
+//   Special values: exp(+-0) = 1, exp(-inf) = +0, exp(+inf) = +inf, NaN gives NaN; overflow
+//   gives +inf.
 template <class Arch>
 inline floats<Arch> exp_u10(floats<Arch> x) {
   using F = floats<Arch>;
-  using I = ints<Arch>;
-  namespace c = constants;
-  // e^-104 < 2^-150 rounds to 0 and e^89 > FLT_MAX to inf; clamping keeps n in int range.
-  // e^x rounds to 1 for |x| < 2^-26.
+  using D = doubles<Arch>;
+  // e^-104 < 2^-150 rounds to 0 and e^89 > FLT_MAX to inf; clamping keeps the double results
+  // normal. e^x rounds to 1 for |x| < 2^-26, and zeroing such x spares the subnormal ones a
+  // microcode assist in the conversion.
   const F clamped =
       xsimd::min(xsimd::max(detail::zero_if_below(x, 0x1p-26f), F(-104.0f)), F(89.0f));
-  const F n = xsimd::nearbyint(clamped * F(c::kLog2e));
-  // x - n ln2 = (x - n kLn2Hi) - n kLn2Lo: the first difference is exact, the second product
-  // is not small against it when r ~ 0, so TwoSum renormalizes r = r_hi + r_lo.
-  const Pair<F> r = two_sum(neg_mul_add(n, F(c::kLn2Hi), clamped), -(n * F(c::kLn2Lo)));
-  // e^r = 1 + r + r^2 E(r), with 1 + r_hi split exactly and e^r_lo ~ 1 + r_lo (1 + r_hi).
-  const Pair<F> head = fast_two_sum(F(1.0f), r.hi);
-  const F tail =
-      mul_add(r.hi * r.hi, horner(r.hi, c::kExp), mul_add(r.lo, r.hi, r.lo) + head.lo);
-  const F mantissa = head.hi + tail;
-  // 2^n in two exact factors, so that only the last product rounds (into the subnormal
-  // range or to inf) and n up to 129 needs no out-of-range exponent.
-  const I k = xsimd::to_int(n);
-  const I k_half = k >> 1;
-  const F result = mantissa * exp2_of_int<Arch>(k_half) * exp2_of_int<Arch>(k - k_half);
-  return xsimd::select(xsimd::isnan(x), x, result);
+  const auto exp_half = [](D x) {
+    const D n = xsimd::nearbyint(x * D(detail::kLog2eDouble));
+    // One rounding of x - n ln2: |n ln2 error| < 150 * 2^-53, far below what float needs.
+    return scale_by_exp2(detail::exp_reduced(neg_mul_add(n, D(0.69314718055994530942), x)), n);
+  };
+  const Pair<D> halves = widen(clamped);
+  return xsimd::select(xsimd::isnan(x), x, narrow(exp_half(halves.hi), exp_half(halves.lo)));
 }
 
 // ---- log ----------------------------------------------------------------------------------
@@ -298,7 +297,6 @@ inline floats<Arch> log_u10(floats<Arch> x) {
 
 // ---- pow ----------------------------------------------------------------------------------
 namespace detail {
-inline constexpr double kLog2eDouble = 1.4426950408889634;
 // The log core in base 2: kPowLog times log2(e).
 inline constexpr std::array<double, 4> kPowLog2 = [] {
   std::array<double, 4> scaled = constants::kPowLog;
@@ -332,8 +330,7 @@ inline floats<Arch> pow_positive(floats<Arch> x, floats<Arch> y) {
     const D t = xsimd::min(xsimd::max(y * (e + log2_m), D(-200.0)), D(200.0));
     const D n = xsimd::nearbyint(t);
     const D r_exp = (t - n) * D(0.69314718055994530942);
-    const D e_r = mul_add(r_exp * r_exp, horner(r_exp, c::kPowExp), r_exp) + one;
-    return scale_by_exp2(e_r, n);
+    return scale_by_exp2(exp_reduced(r_exp), n);
   };
   return narrow(pow_half(m.hi, e.hi, yd.hi), pow_half(m.lo, e.lo, yd.lo));
 }
