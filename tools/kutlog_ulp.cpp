@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "common/cli.hpp"
+#include "common/plot.hpp"
 #include "common/table.hpp"
 #include "common/ulp.hpp"
 #include "kutlog/accuracy.hpp"
@@ -17,11 +18,40 @@ using namespace kutlog::tools;
 struct Row {
   std::string function, arch, variant;
   ErrorStats stats;
+  ErrorProfile profile;  // filled when plotting
 };
 
 std::string format_input(const ErrorStats& stats) {
   if (std::isnan(stats.worst_y)) return cell("%.9g", stats.worst_x);
   return cell("x=%.9g;y=%.9g", stats.worst_x, stats.worst_y);
+}
+
+// The maximal error per input bucket of every row, a series each, with the bound.
+void draw_errors(const std::vector<Row>& rows, const std::vector<std::string>& functions,
+                 const std::string& path) {
+  if (functions.size() != 1) throw std::invalid_argument("--plot draws one --function at a time");
+  const std::string& function = functions.front();
+  const auto bound = kutlog::find_accuracy_bound(function);
+  Plot plot;
+  plot.title(std::string(bound->kernel) + ": ULP error against the input, every float of " +
+             std::string(bound->domain.substr(0, bound->domain.find(';'))))
+      .x_label(function == "pow" ? "x" : "input")
+      .y_label("max ULP error per bucket");
+  const bool log_x = function == "log" || function == "pow";  // domains spanning decades
+  plot.x_log(log_x);
+  for (const Row& row : rows) {
+    std::vector<double> xs, ys;
+    for (std::size_t b = 0; b < row.profile.max_ulp.size(); ++b) {
+      const bool filled = row.profile.max_ulp[b] >= 0;  // -1: no input fell in the bucket
+      if (filled && (!log_x || row.profile.worst_input[b] > 0))
+        xs.push_back(row.profile.worst_input[b]), ys.push_back(row.profile.max_ulp[b]);
+    }
+    plot.points(function == "pow" ? row.function + " " + row.arch : row.arch, xs, ys);
+  }
+  plot.hline(bound->max_ulp, cell("bound %.2f ULP", bound->max_ulp))
+      .hline(bound->promised_ulp, cell("promise %.1f ULP", bound->promised_ulp));
+  plot.save(path);
+  std::fprintf(stderr, "kutlog-ulp: wrote %s\n", path.c_str());
 }
 
 // One row per kernel: its rows (every arch, every pow exponent set) merged.
@@ -71,6 +101,10 @@ int main(int argc, char** argv) {
   app.add_option("--format", format_name, "Output format: text, csv or markdown")
       ->check(CLI::IsMember({"text", "csv", "markdown"}))
       ->capture_default_str();
+  std::string plot_path;
+  app.add_option("--plot", plot_path,
+                 "Draw the error against the input to this PNG (one function; a series per arch, "
+                 "for pow per exponent)");
   bool summary = false;
   app.add_flag("--summary", summary,
                "One row per kernel: the maximum over the archs (and pow's exponent sets), beside "
@@ -99,23 +133,30 @@ int main(int argc, char** argv) {
       for (const std::string& name : functions) {
         SweepOptions options;
         options.threads = threads;
+        const auto add_row = [&](std::string function, const auto& sweep) {
+          Row& row = rows.emplace_back();
+          row.function = std::move(function), row.arch = arch_label, row.variant = "precise";
+          options.profile = plot_path.empty() ? nullptr : &row.profile;
+          options.profile_linear_in_value = name != "log" && name != "pow";  // as the plot's x axis
+          options.progress_label = row.function + " " + arch_label;
+          row.stats = sweep(options);
+        };
         if (name != "pow") {
           const UnaryFunction& function = *find_unary_function(name);
-          options.progress_label = name + " " + arch_label;
-          rows.push_back({name, arch_label, "precise",
-                          sweep_unary(function, function.domain_lo, function.domain_hi, options)});
+          add_row(name, [&](const SweepOptions& o) {
+            return sweep_unary(function, function.domain_lo, function.domain_hi, o);
+          });
           continue;
         }
-        for (float y : kPowSweepExponents) {
-          options.progress_label = cell("pow y=%g ", y) + arch_label;
-          rows.push_back({cell("pow[y=%g]", y), arch_label, "precise", sweep_pow_exponent(y, options)});
-        }
-        options.progress_label = "pow random " + arch_label;
-        rows.push_back({cell("pow[random %llu]", (unsigned long long)random_pairs), arch_label,
-                        "precise", sweep_pow_random(random_pairs, 1, options)});
+        for (float y : kPowSweepExponents)
+          add_row(cell("pow[y=%g]", y), [&](const SweepOptions& o) { return sweep_pow_exponent(y, o); });
+        if (plot_path.empty())
+          add_row(cell("pow[random %llu]", (unsigned long long)random_pairs),
+                  [&](const SweepOptions& o) { return sweep_pow_random(random_pairs, 1, o); });
       }
     }
 
+    if (!plot_path.empty()) draw_errors(rows, functions, plot_path);
     const Format format = parse_format(format_name);
     if (summary) {
       print_summary(rows, functions, format);

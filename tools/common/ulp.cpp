@@ -176,9 +176,12 @@ ErrorStats sweep(float lo, float hi, const SweepOptions& options, Compute comput
         for (std::size_t i = 0; i < count; ++i) chunk.add(ulp_error(out[i], reference(in[i])), in[i], y);
         accumulator.add_chunk(thread, chunk);
         if (accumulator.profiling())
-          for (std::size_t i = 0; i < count; ++i)
-            accumulator.add_to_profile(thread, ulp_error(out[i], reference(in[i])), in[i],
-                                       (double(first_key) + double(i) - first) / span);
+          for (std::size_t i = 0; i < count; ++i) {
+            const double position = options.profile_linear_in_value
+                                        ? (double(in[i]) - lo) / (double(hi) - lo)
+                                        : (double(first_key) + double(i) - first) / span;
+            accumulator.add_to_profile(thread, ulp_error(out[i], reference(in[i])), in[i], position);
+          }
       },
       options.progress_label);
   return accumulator.finish();

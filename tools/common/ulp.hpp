@@ -61,6 +61,9 @@ struct SweepOptions {
   unsigned threads = 0;        // 0: every core
   ErrorProfile* profile = nullptr;
   int profile_buckets = 2048;
+  // Buckets of equal width in the input's value (for a linear axis), else of equal numbers of
+  // floats (for a logarithmic one).
+  bool profile_linear_in_value = false;
 };
 
 using UnaryArray = void (*)(const float*, float*, std::size_t);
