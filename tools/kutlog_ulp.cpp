@@ -29,7 +29,6 @@ std::string format_input(const ErrorStats& stats) {
 // The maximal error per input bucket of every row, a series each, with the bound.
 void draw_errors(const std::vector<Row>& rows, const std::vector<std::string>& functions,
                  const std::string& path) {
-  if (functions.size() != 1) throw std::invalid_argument("--plot draws one --function at a time");
   const std::string& function = functions.front();
   const auto bound = kutlog::find_accuracy_bound(function);
   Plot plot;
@@ -125,6 +124,8 @@ int main(int argc, char** argv) {
       if (name != "pow" && !find_unary_function(name))
         throw std::invalid_argument("unknown function '" + name +
                                     "'; valid: acos, cos, cos_halfpi, exp, log, pow");
+    if (!plot_path.empty() && functions.size() != 1)
+      throw std::invalid_argument("--plot draws one --function at a time");
 
     std::vector<Row> rows;
     for (kutlog::Arch arch : archs) {
