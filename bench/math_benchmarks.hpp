@@ -14,7 +14,7 @@ namespace kutlog::bench {
 
 // Applies `kernel` over arrays of kArrayLength floats (a multiple of every batch size).
 template <class Arch, class Kernel>
-void run_batches(benchmark::State& state, Kernel kernel, const std::vector<float>& x,
+void run_batches(benchmark::State& state, const Kernel& kernel, const std::vector<float>& x,
                  const std::vector<float>& y) {
   using F = xsimd::batch<float, Arch>;
   std::vector<float> out(kArrayLength);

@@ -12,7 +12,9 @@
 #include <string>
 
 #include "arch/kernel_table.hpp"
+#include "kutlog/lobe.hpp"
 #include "kutlog/math.hpp"
+#include "kutlog/shade.hpp"
 
 namespace kutlog {
 namespace {
@@ -92,7 +94,9 @@ Arch automatic_arch() {
 constexpr int kNotForced = -1;
 std::atomic<int> forced_arch{kNotForced};
 
-const detail::KernelTable& active_table() {
+}  // namespace
+
+const detail::KernelTable& detail::active_kernel_table() {
   switch (active_arch()) {
     case Arch::avx512: return detail::kernel_table_avx512();
     case Arch::avx2: return detail::kernel_table_avx2();
@@ -101,6 +105,8 @@ const detail::KernelTable& active_table() {
   return detail::kernel_table_sse4_1();
 }
 
+namespace {
+const detail::KernelTable& active_table() { return detail::active_kernel_table(); }
 }  // namespace
 
 std::string_view arch_name(Arch arch) {
@@ -173,5 +179,33 @@ void pow_u10(const float* x, float y, float* out, std::size_t count) {
   active_table().pow_scalar_u10(x, y, out, count);
 }
 }  // namespace math
+
+void Lobe::eval(const float* t, float* out, std::size_t count, Variant variant,
+                Normalization normalization) const {
+  const detail::KernelTable& table = active_table();
+  table.kutlog_lobe(kernel(variant, normalization, table.fused_fma), t, out, count);
+}
+void blinn_phong_xsimd(const float* t, float* out, std::size_t count, float n, float scale) {
+  active_table().blinn_phong_xsimd(t, n, scale, out, count);
+}
+void blinn_phong_u10(const float* t, float* out, std::size_t count, float n, float scale) {
+  active_table().blinn_phong_u10(t, n, scale, out, count);
+}
+void schlick(const float* t, float* out, std::size_t count, float n) {
+  active_table().schlick(t, n, out, count);
+}
+
+void shade(const Lobe& lobe, Vectors normal, Vectors to_light, Vectors to_viewer, float* out,
+           std::size_t count, const std::uint8_t* mask, ShadeOptions options) {
+  const detail::KernelTable& table = active_table();
+  table.shade_vectors(lobe.kernel(options.variant, options.normalization, table.fused_fma),
+                      options.reflection, normal, to_light, to_viewer, out, count, mask);
+}
+void shade(const Lobe& lobe, const float* t, const float* n_dot_l, float* out, std::size_t count,
+           const std::uint8_t* mask, ShadeOptions options) {
+  const detail::KernelTable& table = active_table();
+  table.shade_cosines(lobe.kernel(options.variant, options.normalization, table.fused_fma), t,
+                      n_dot_l, out, count, mask);
+}
 
 }  // namespace kutlog

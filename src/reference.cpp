@@ -111,18 +111,24 @@ KutlogLobe::KutlogLobe(double n, int k, double Q) : n_(n), k_(k), Q_(Q) {
 
 double KutlogLobe::integration_limit() const { return std::min(cutoff_angle_, pi / 2); }
 
-double KutlogLobe::eval_angle(double x) const {
-  if (std::isnan(x)) return x;
-  x = std::fabs(x);
-  if (x >= cutoff_angle_ || x >= pi / 2) return 0;
+double KutlogLobe::lobe_above_horizon(double x) const {
+  if (x >= cutoff_angle_) return 0;
   const double scaled_cos = std::cos(c_ * x);
   return scaled_cos > 0 ? power_of_integer(scaled_cos, k_) : 0;
 }
 
+double KutlogLobe::eval_angle(double x) const {
+  if (std::isnan(x)) return x;
+  x = std::fabs(x);
+  return x >= pi / 2 ? 0 : lobe_above_horizon(x);
+}
+
 double KutlogLobe::eval(double t) const {
+  // The horizon is t <= 0 (the data rule), not acos(t) >= pi/2: for 0 < t < 6e-17, acos(t)
+  // rounds to pi/2 in double.
   double decided;
   if (apply_data_rule(t, decided)) return decided;
-  return eval_angle(std::acos(t));
+  return lobe_above_horizon(std::acos(t));
 }
 
 double KutlogLobe::integral() const {

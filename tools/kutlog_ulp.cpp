@@ -1,10 +1,12 @@
 // kutlog-ulp: measures the ULP error of kutlog's SIMD math kernels over every float of their
 // domains, per arch, against glibc's double functions (exact to 2^-29 float ulp).
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "common/cli.hpp"
+#include "common/lobe_errors.hpp"
 #include "common/plot.hpp"
 #include "common/table.hpp"
 #include "common/ulp.hpp"
@@ -77,6 +79,50 @@ void print_summary(const std::vector<Row>& rows, const std::vector<std::string>&
   table.print(format);
 }
 
+// An --n entry: a number, or "k+1".
+double exponent_of(const std::string& text, int k) {
+  if (text == "k+1") return k + 1.0;
+  std::size_t used = 0;
+  double n = 0;
+  try {
+    n = std::stod(text, &used);
+  } catch (const std::exception&) {
+  }
+  if (used == 0 || used != text.size())
+    throw std::invalid_argument("--n: '" + text + "' is not a number or k+1");
+  return n;
+}
+
+// --function kutlog: the lobe kernels over every float t in [-1, 1], per (n, k, Q) and arch.
+int measure_lobes(const std::vector<kutlog::Arch>& archs, const std::vector<std::string>& variants,
+                  const std::vector<std::string>& n_list, const std::vector<int>& k_list,
+                  const std::vector<double>& q_list, unsigned threads, Format format) {
+  Table table({"function", "arch", "variant", "n", "k", "Q", "max_abs_err", "max_ulp_epicenter",
+               "worst_input"});
+  for (kutlog::Arch arch : archs) {
+    const kutlog::ScopedArch forced(arch);
+    for (int k : k_list)
+      for (double Q : q_list)
+        for (const std::string& n_text : n_list) {
+          const double n = exponent_of(n_text, k);
+          const kutlog::Lobe lobe(n, k, Q);  // validates
+          const auto errors = measure_lobe(lobe, 1, threads);
+          for (int i = 0; i < 4; ++i) {
+            const std::string variant = i < 2 ? "precise" : "fast";
+            if (std::find(variants.begin(), variants.end(), variant) == variants.end()) continue;
+            const LobeErrors& e = errors[i];
+            table.add_row({i % 2 ? "kutlog_normalized" : "kutlog",
+                           std::string(kutlog::arch_name(arch)), variant, cell("%g", n),
+                           cell("%d", k), cell("%g", Q), cell("%.3g", e.max_abs_error),
+                           cell("%.3f", e.max_epicenter_ulp),
+                           cell("%.9g", e.max_abs_error > 0 ? e.worst_abs_input : e.worst_ulp_input)});
+          }
+        }
+  }
+  table.print(format);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -84,7 +130,10 @@ int main(int argc, char** argv) {
       "Measure the ULP error of kutlog's SIMD math kernels over every float of their domains,\n"
       "per arch, against glibc's double-precision functions. Functions: acos [-1, 1],\n"
       "cos [-pi, pi], cos_halfpi [0, pi/2], exp [-104, 89], log (0, FLT_MAX], and pow: every x\n"
-      "in (0, 2^8] for each y in {1, 2, 5, 10, 50, 100, 500, 1000, 5000}, plus random pairs.",
+      "in (0, 2^8] for each y in {1, 2, 5, 10, 50, 100, 500, 1000, 5000}, plus random pairs.\n"
+      "--function kutlog measures the F_kutlog lobe kernels instead, over every float t in\n"
+      "[-1, 1], for each --n, --k, --q: max_abs_err relative to the lobe's peak (1, or coef for\n"
+      "kutlog_normalized), max_ulp_epicenter where the lobe is >= 0.6 of its peak.",
       "kutlog-ulp");
   std::vector<std::string> functions{"acos", "cos", "cos_halfpi", "exp", "log", "pow"};
   std::vector<std::string> arch_names{"all"};
@@ -100,6 +149,19 @@ int main(int argc, char** argv) {
   app.add_option("--format", format_name, "Output format: text, csv or markdown")
       ->check(CLI::IsMember({"text", "csv", "markdown"}))
       ->capture_default_str();
+  std::vector<std::string> variants{"precise", "fast"};
+  std::vector<std::string> n_list{"k+1", "10", "100", "1000", "10000"};
+  std::vector<int> k_list{1, 2, 3, 4, 5};
+  std::vector<double> q_list{0.1, 0.5, 0.9};
+  app.add_option("--variant", variants, "kutlog: precise, fast (comma-separated)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"precise", "fast"}))
+      ->capture_default_str();
+  app.add_option("--n", n_list, "kutlog: exponents n (real > 0, or k+1), comma-separated")
+      ->delimiter(',')
+      ->capture_default_str();
+  app.add_option("--k", k_list, "kutlog: powers k, comma-separated")->delimiter(',')->capture_default_str();
+  app.add_option("--q", q_list, "kutlog: anchors Q, comma-separated")->delimiter(',')->capture_default_str();
   std::string plot_path;
   app.add_option("--plot", plot_path,
                  "Draw the error against the input to this PNG (one function; a series per arch, "
@@ -120,10 +182,21 @@ int main(int argc, char** argv) {
       }
       archs.push_back(kutlog::parse_arch(name));
     }
+    for (kutlog::Arch arch : archs)
+      if (!kutlog::arch_supported(arch))
+        throw std::invalid_argument("--arch " + std::string(kutlog::arch_name(arch)) +
+                                    " is not supported by this machine");
+    const bool lobes = std::find(functions.begin(), functions.end(), "kutlog") != functions.end();
+    if (lobes && functions.size() > 1)
+      throw std::invalid_argument("--function kutlog measures the lobes; give it alone");
+    if (lobes) {
+      for (const std::string& n : n_list) exponent_of(n, 1);  // validates before any sweep
+      return measure_lobes(archs, variants, n_list, k_list, q_list, threads, parse_format(format_name));
+    }
     for (const std::string& name : functions)
       if (name != "pow" && !find_unary_function(name))
         throw std::invalid_argument("unknown function '" + name +
-                                    "'; valid: acos, cos, cos_halfpi, exp, log, pow");
+                                    "'; valid: acos, cos, cos_halfpi, exp, log, pow, kutlog");
     if (!plot_path.empty() && functions.size() != 1)
       throw std::invalid_argument("--plot draws one --function at a time");
 

@@ -1,8 +1,12 @@
 // The benchmarks of one arch; CMake gives this file only that arch's flags.
+#include "lobe_benchmarks.hpp"
 #include "math_benchmarks.hpp"
 
 namespace kutlog::bench {
 
-void register_benchmarks_avx512() { register_math_benchmarks<xsimd::avx512bw>("avx512"); }
+void register_benchmarks_avx512() {
+  register_math_benchmarks<xsimd::avx512bw>("avx512");
+  register_lobe_benchmarks<xsimd::avx512bw>("avx512");
+}
 
 }  // namespace kutlog::bench

@@ -30,6 +30,19 @@ inline constexpr AccuracyBound kAccuracyBounds[] = {
      "x in (0, 2^8], y in {1, 2, 5, 10, 50, 100, 500, 1000, 5000}; 10^7 random (x, y)"},
 };
 
+// The lobe kernels of kutlog::Lobe (kutlog/lobe.hpp): promised and measured, over every float
+// t in [-1, 1] on the grid n in {k+1, 10, 100, 1000, 10000}, k in 1..5, Q in {0.1, 0.5, 0.9},
+// every arch, F and coef * F (the latter relative to coef).
+struct LobeBound {
+  std::string_view variant;
+  double promised_abs_error, max_abs_error;
+  double promised_epicenter_ulp, max_epicenter_ulp;  // where F >= 0.6; 0: no promise
+};
+inline constexpr LobeBound kLobeBounds[] = {
+    {"precise", 0x1p-22, 0x1p-22, 2.0, 2.0},
+    {"fast", 0x1p-16, 0x1p-16, 0.0, 0.0},
+};
+
 // The bound of a kernel by function name ("acos", ...) and variant, if kutlog has one.
 constexpr std::optional<AccuracyBound> find_accuracy_bound(std::string_view function,
                                                            std::string_view variant = "precise") {

@@ -112,6 +112,9 @@ class KutlogLobe {
   double energy(double coef) const;
 
  private:
+  // cos^k(c x) before the cut-off, 0 past it; x in [0, pi/2].
+  double lobe_above_horizon(double x) const;
+
   double n_;
   int k_;
   double Q_;

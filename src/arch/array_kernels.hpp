@@ -7,7 +7,9 @@
 #include <xsimd/xsimd.hpp>
 
 #include "arch/kernel_table.hpp"
+#include "kutlog/simd/lobe.hpp"
 #include "kutlog/simd/math.hpp"
+#include "kutlog/simd/shade.hpp"
 
 namespace kutlog::detail {
 
@@ -15,7 +17,7 @@ namespace kutlog::detail {
 // an aligned local buffer padded with `padding` (a value inside every kernel's domain), so no
 // load or store leaves the arrays.
 template <class Arch, int Inputs, class Kernel>
-inline void map_arrays(Kernel kernel, const float* const (&inputs)[Inputs], float* out,
+inline void map_arrays(const Kernel& kernel, const float* const (&inputs)[Inputs], float* out,
                        std::size_t count, float padding = 0.5f) {
   using F = xsimd::batch<float, Arch>;
   constexpr std::size_t N = F::size;
@@ -37,10 +39,92 @@ inline void map_arrays(Kernel kernel, const float* const (&inputs)[Inputs], floa
   for (std::size_t j = 0; j < tail; ++j) out[i + j] = result[j];
 }
 
+// The lobe over an array: the float form with its degree as a template argument (unrolled,
+// coefficients in registers), chosen once per call; the double form generic.
+template <class Arch, int kDegree>
+void kutlog_lobe_array(const LobeKernel& kernel, const float* t, float* out, std::size_t count) {
+  map_arrays<Arch, 1>(simd::PreparedLobe<Arch, kDegree>(kernel), {t}, out, count, 1.0f);
+}
+inline constexpr int kMaxUnrolledDegree = 16;
+template <class Arch>
+void kutlog_lobe_array_any(const LobeKernel& kernel, const float* t, float* out,
+                           std::size_t count) {
+  static constexpr auto by_degree = []<int... degree>(std::integer_sequence<int, degree...>) {
+    return std::array<LobeArrayKernel, sizeof...(degree)>{&kutlog_lobe_array<Arch, degree>...};
+  }(std::make_integer_sequence<int, kMaxUnrolledDegree + 1>());
+  const bool unrolled = kernel.form == LobeKernel::Form::float_polynomial &&
+                        kernel.degree <= kMaxUnrolledDegree;
+  (unrolled ? by_degree[kernel.degree] : &kutlog_lobe_array<Arch, -1>)(kernel, t, out, count);
+}
+
+// The stream loop: kernel(inputs...) on batches of Inputs arrays, stored where mask (if any)
+// selects. The tail goes through local buffers, as in map_arrays.
+template <class Arch, int Inputs, class Kernel>
+inline void map_masked(const Kernel& kernel, const float* const (&inputs)[Inputs], float* out,
+                       std::size_t count, const std::uint8_t* mask) {
+  using F = xsimd::batch<float, Arch>;
+  constexpr std::size_t N = F::size;
+  const auto run = [&](const float* const (&sources)[Inputs], std::size_t at, float* target,
+                       const std::uint8_t* lanes) {
+    const F value = [&]<int... input>(std::integer_sequence<int, input...>) {
+      return kernel(F::load_unaligned(sources[input] + at)...);
+    }(std::make_integer_sequence<int, Inputs>());
+    if (lanes) simd::store_selected(target, value, simd::load_mask<Arch>(lanes));
+    else value.store_unaligned(target);
+  };
+  std::size_t i = 0;
+  for (; i + N <= count; i += N) run(inputs, i, out + i, mask ? mask + i : nullptr);
+  if (i == count) return;
+  const std::size_t tail = count - i;
+  alignas(64) float buffers[Inputs][N];
+  const float* sources[Inputs];
+  for (int input = 0; input < Inputs; ++input) {
+    for (std::size_t j = 0; j < N; ++j) buffers[input][j] = j < tail ? inputs[input][i + j] : 0.0f;
+    sources[input] = buffers[input];
+  }
+  alignas(64) float result[N];
+  std::uint8_t lanes[N];
+  for (std::size_t j = 0; j < N; ++j) {
+    result[j] = j < tail ? out[i + j] : 0.0f;
+    lanes[j] = j < tail && (!mask || mask[i + j]);
+  }
+  run(sources, 0, result, lanes);
+  for (std::size_t j = 0; j < tail; ++j) out[i + j] = result[j];
+}
+
+template <class Arch>
+void shade_vectors_array(const LobeKernel& kernel, Reflection reflection, Vectors normal,
+                         Vectors to_light, Vectors to_viewer, float* out, std::size_t count,
+                         const std::uint8_t* mask) {
+  using F = xsimd::batch<float, Arch>;
+  const simd::PreparedLobe<Arch> lobe(kernel);
+  const auto shader = [&](F nx, F ny, F nz, F lx, F ly, F lz, F vx, F vy, F vz) {
+    const simd::Vector3<Arch> n{nx, ny, nz}, l{lx, ly, lz}, v{vx, vy, vz};
+    const F n_dot_l = simd::dot(n, l);
+    const F t = reflection == Reflection::blinn ? simd::blinn_cosine(n, l, v)
+                                                : simd::phong_cosine(n, l, v, n_dot_l);
+    return lobe(t) * xsimd::max(F(0.0f), n_dot_l);
+  };
+  map_masked<Arch, 9>(shader,
+                      {normal.x, normal.y, normal.z, to_light.x, to_light.y, to_light.z,
+                       to_viewer.x, to_viewer.y, to_viewer.z},
+                      out, count, mask);
+}
+
+template <class Arch>
+void shade_cosines_array(const LobeKernel& kernel, const float* t, const float* n_dot_l,
+                         float* out, std::size_t count, const std::uint8_t* mask) {
+  using F = xsimd::batch<float, Arch>;
+  const simd::PreparedLobe<Arch> lobe(kernel);
+  map_masked<Arch, 2>([&](F cosine, F n_l) { return lobe(cosine) * xsimd::max(F(0.0f), n_l); },
+                      {t, n_dot_l}, out, count, mask);
+}
+
 template <class Arch>
 KernelTable make_kernel_table() {
   using F = xsimd::batch<float, Arch>;
   KernelTable table{};
+  table.fused_fma = simd::has_fused_fma<Arch>;
   table.acos_u10 = [](const float* x, float* out, std::size_t count) {
     map_arrays<Arch, 1>([](F v) { return simd::acos_u10(v); }, {x}, out, count);
   };
@@ -63,6 +147,23 @@ KernelTable make_kernel_table() {
     const F exponent(y);
     map_arrays<Arch, 1>([exponent](F a) { return simd::pow_u10(a, exponent); }, {x}, out,
                         count);
+  };
+  table.kutlog_lobe = &kutlog_lobe_array_any<Arch>;
+  table.blinn_phong_xsimd = [](const float* t, float n, float scale, float* out, std::size_t count) {
+    const F exponent(n), factor(scale);
+    map_arrays<Arch, 1>([&](F v) { return simd::blinn_phong_xsimd(v, exponent, factor); }, {t},
+                        out, count);
+  };
+  table.blinn_phong_u10 = [](const float* t, float n, float scale, float* out, std::size_t count) {
+    const F exponent(n), factor(scale);
+    map_arrays<Arch, 1>([&](F v) { return simd::blinn_phong_u10(v, exponent, factor); }, {t},
+                        out, count);
+  };
+  table.shade_vectors = &shade_vectors_array<Arch>;
+  table.shade_cosines = &shade_cosines_array<Arch>;
+  table.schlick = [](const float* t, float n, float* out, std::size_t count) {
+    const F exponent(n);
+    map_arrays<Arch, 1>([&](F v) { return simd::schlick(v, exponent); }, {t}, out, count);
   };
   return table;
 }

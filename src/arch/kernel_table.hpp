@@ -3,17 +3,37 @@
 
 #include <cstddef>
 
+#include "kutlog/lobe.hpp"
+#include "kutlog/shade.hpp"
+
 namespace kutlog::detail {
 
 using UnaryArrayKernel = void (*)(const float*, float*, std::size_t);
 using BinaryArrayKernel = void (*)(const float*, const float*, float*, std::size_t);
 using BinaryScalarArrayKernel = void (*)(const float*, float, float*, std::size_t);
 
+using LobeArrayKernel = void (*)(const LobeKernel&, const float*, float*, std::size_t);
+using PowerLobeArrayKernel = void (*)(const float*, float n, float scale, float*, std::size_t);
+
+using ShadeVectorsKernel = void (*)(const LobeKernel&, Reflection, Vectors, Vectors, Vectors,
+                                    float*, std::size_t, const std::uint8_t*);
+using ShadeCosinesKernel = void (*)(const LobeKernel&, const float*, const float*, float*,
+                                    std::size_t, const std::uint8_t*);
+
 struct KernelTable {
+  bool fused_fma;  // which of a Lobe's kernels this arch runs
   UnaryArrayKernel acos_u10, cos_u10, cos_halfpi_u10, exp_u10, log_u10;
   BinaryArrayKernel pow_u10;
   BinaryScalarArrayKernel pow_scalar_u10;
+  LobeArrayKernel kutlog_lobe;
+  PowerLobeArrayKernel blinn_phong_xsimd, blinn_phong_u10;
+  BinaryScalarArrayKernel schlick;
+  ShadeVectorsKernel shade_vectors;
+  ShadeCosinesKernel shade_cosines;
 };
+
+// The table of the arch in use (kutlog/dispatch.hpp); throws as active_arch() does.
+const KernelTable& active_kernel_table();
 
 // One per arch translation unit (src/arch/<arch>.cpp), compiled with that arch's flags.
 const KernelTable& kernel_table_sse4_1();

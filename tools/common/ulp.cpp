@@ -18,25 +18,18 @@ namespace {
 
 constexpr double kInfinite = std::numeric_limits<double>::infinity();
 
-// Floats ordered as integers: -0 -> 0x7fffffff, +0 -> 0x80000000, bigger values bigger keys.
-std::uint32_t order_key(float x) {
-  const auto bits = std::bit_cast<std::uint32_t>(x);
-  return bits & 0x80000000u ? 0xffffffffu - bits : bits + 0x80000000u;
-}
-float from_order_key(std::uint32_t key) {
-  return std::bit_cast<float>(key >= 0x80000000u ? key - 0x80000000u : 0xffffffffu - key);
-}
-
 constexpr std::size_t kChunk = 1 << 16;
 
 unsigned thread_count(unsigned requested) {
   return requested ? requested : std::max(1u, std::thread::hardware_concurrency());
 }
 
-// Runs `work(chunk, thread)` for chunk in [0, chunks) over the threads, printing progress.
-void parallel_chunks(std::uint64_t chunks, unsigned threads,
-                     const std::function<void(std::uint64_t, unsigned)>& work,
-                     const std::string& progress_label) {
+}  // namespace
+
+void parallel_for(std::uint64_t chunks, unsigned requested_threads,
+                  const std::function<void(std::uint64_t, unsigned)>& work,
+                  const std::string& progress_label) {
+  const unsigned threads = thread_count(requested_threads);
   std::atomic<std::uint64_t> next{0}, done{0};
   std::vector<std::thread> workers;
   for (unsigned t = 0; t < threads; ++t)
@@ -53,6 +46,8 @@ void parallel_chunks(std::uint64_t chunks, unsigned threads,
   for (std::thread& worker : workers) worker.join();
   if (show) std::fprintf(stderr, "\r%s done  \n", progress_label.c_str());
 }
+
+namespace {
 
 // Per-thread statistics and profiles, merged after the sweep.
 class Accumulator {
@@ -97,6 +92,14 @@ class Accumulator {
 constexpr float kPi = 3.14159274f, kHalfPi = 1.57079637f;  // float(pi), float(pi/2)
 
 }  // namespace
+
+std::uint32_t order_key(float x) {
+  const auto bits = std::bit_cast<std::uint32_t>(x);
+  return bits & 0x80000000u ? 0xffffffffu - bits : bits + 0x80000000u;
+}
+float float_of_order_key(std::uint32_t key) {
+  return std::bit_cast<float>(key >= 0x80000000u ? key - 0x80000000u : 0xffffffffu - key);
+}
 
 double ulp_error_special(float computed, double reference) {
   if (std::isnan(reference)) return std::isnan(computed) ? 0 : kInfinite;
@@ -144,7 +147,7 @@ void for_each_float(float lo, float hi, unsigned threads,
   const std::uint32_t first = order_key(lo), last = order_key(hi);
   const std::uint64_t total = std::uint64_t(last) - first + 1;
   const std::uint64_t chunks = (total + kChunk - 1) / kChunk;
-  parallel_chunks(
+  parallel_for(
       chunks, thread_count(threads),
       [&](std::uint64_t chunk, unsigned thread) {
         const std::uint64_t start = first + chunk * kChunk;
@@ -170,7 +173,7 @@ ErrorStats sweep(float lo, float hi, const SweepOptions& options, Compute comput
         in_buffer.resize(count), out_buffer.resize(count);
         float* const in = in_buffer.data();
         float* const out = out_buffer.data();
-        for (std::size_t i = 0; i < count; ++i) in[i] = from_order_key(first_key + std::uint32_t(i));
+        for (std::size_t i = 0; i < count; ++i) in[i] = float_of_order_key(first_key + std::uint32_t(i));
         compute(in, out, count);
         ErrorStats chunk;
         for (std::size_t i = 0; i < count; ++i) chunk.add(ulp_error(out[i], reference(in[i])), in[i], y);
@@ -206,7 +209,7 @@ ErrorStats sweep_pow_random(std::uint64_t pairs, std::uint64_t seed, const Sweep
   const unsigned threads = thread_count(options.threads);
   Accumulator accumulator(threads, options);
   const std::uint64_t chunks = (pairs + kChunk - 1) / kChunk;
-  parallel_chunks(
+  parallel_for(
       chunks, threads,
       [&](std::uint64_t chunk, unsigned thread) {
         // One generator per chunk: the pairs do not depend on the thread count.

@@ -94,10 +94,20 @@ ErrorStats sweep_pow_exponent(float y, const SweepOptions& options = {});
 ErrorStats sweep_pow_random(std::uint64_t pairs, std::uint64_t seed,
                             const SweepOptions& options = {});
 
-// Calls `visit(x, count)` on consecutive runs of every float in [lo, hi] (ordered, split at
-// +-0 so that bit patterns increase with the value), in parallel over `threads` threads.
+// Floats ordered as integers: -0 -> 0x7fffffff, +0 -> 0x80000000, bigger values bigger keys.
+std::uint32_t order_key(float x);
+float float_of_order_key(std::uint32_t key);
+
+// Runs work(task, thread) for every task in [0, tasks), spread over `threads` threads (0: every
+// core), printing progress on stderr when it is a terminal and the label is not empty.
+void parallel_for(std::uint64_t tasks, unsigned threads,
+                  const std::function<void(std::uint64_t task, unsigned thread)>& work,
+                  const std::string& progress_label = "");
+
+// Calls `visit(first_key, count, thread)` on consecutive runs of every float in [lo, hi] (by
+// order key: split at +-0, increasing with the value), in parallel over `threads` threads.
 void for_each_float(float lo, float hi, unsigned threads,
-                    const std::function<void(std::uint32_t first_bits, std::size_t count,
+                    const std::function<void(std::uint32_t first_key, std::size_t count,
                                              unsigned thread)>& visit,
                     const std::string& progress_label);
 

@@ -1,0 +1,93 @@
+// kutlog/lobe.hpp: the F_kutlog lobe as a shading kernel, for one material.
+//
+// A Lobe is built once per material from (n, k, Q): it validates them (std::invalid_argument,
+// as kutlog/reference.hpp does), computes c, the cut-off, the exact coefficient, and fits the
+// lobe for the kernels. Then eval() shades arrays of cosines t = N.H (Blinn) or R.V (Phong).
+//
+// How the kernels are fast: on its support t in [cos(gran), 1] the lobe is an analytic
+// function of w = 1 - t (acos(1 - w)^2 is analytic up to w = 2, cos^k(c sqrt(.)) is entire),
+// so a polynomial fitted per material reproduces it; the setup checks the fit, evaluated
+// exactly as the kernel will (same roundings), against the reference on a dense grid. Where
+// float evaluation cannot meet the bound (lobes whose polynomial is ill-conditioned in float,
+// such as n close to k), the lobe is evaluated in double lanes as B^k with B = cos(c acos t),
+// whose fit always converges.
+//
+// Accuracy (measured over every float t in [-1, 1] on the grid n in {k+1, 10, 100, 1000,
+// 10000}, k in 1..5, Q in {0.1, 0.5, 0.9}, every arch; kutlog/accuracy.hpp has the numbers):
+//   precise: |error| <= 2^-22 everywhere, <= 2 ULP where F >= 0.6 (the epicenter);
+//   fast:    |error| <= 2^-16 everywhere.
+// Normalized results (coef * F) are measured relative to coef.
+//
+// Data rule (the reference's): t > 1 gives F(1) = 1 (coef when normalized), t at or below
+// cos(gran) and t <= 0 give 0, NaN gives NaN. Any count, any alignment, out may equal t.
+// Thread-safe (const), no allocation in eval.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+namespace kutlog {
+
+enum class Variant : std::uint8_t { precise, fast };
+enum class Normalization : std::uint8_t { none, exact_coef };
+
+// What a batch kernel needs of one lobe, precomputed: F(t) = scale * P(w), w = 1 - min(t, 1),
+// zero where t <= t_cut. Plain data, for kutlog/simd/lobe.hpp.
+struct LobeKernel {
+  static constexpr int kMaxDegree = 24;
+  enum class Form : std::uint8_t {
+    float_polynomial,   // P = 1 - w q(s), s = center_t - min(t, 1), q in float
+    double_base_power,  // P = (1 - w q(w))^k, q and the power in double lanes
+  };
+  Form form = Form::float_polynomial;
+  int degree = 0;  // of q
+  int k = 1;       // the power, for double_base_power
+  float t_cut = 0;
+  float center_t = 1;  // float form: q's powers are of center_t - t; center_t ~ cos(gran)
+  float scale_f = 1;
+  double scale_d = 1;
+  std::array<float, kMaxDegree + 1> q_f{};
+  std::array<double, kMaxDegree + 1> q_d{};
+};
+
+class Lobe {
+ public:
+  // Throws std::invalid_argument naming the parameter and its range: n finite > 0, k integer
+  // in [1, 64], Q in (0, 1).
+  Lobe(double n, int k, double Q);
+
+  double n() const { return n_; }
+  int k() const { return k_; }
+  double Q() const { return Q_; }
+  double c() const { return c_; }
+  double cutoff_angle() const { return cutoff_angle_; }
+  // 1 / (2 pi Int): coef * F conserves energy exactly.
+  double coef_exact() const { return coef_exact_; }
+
+  // out[i] = F(t[i]), or coef_exact * F(t[i]).
+  void eval(const float* t, float* out, std::size_t count, Variant variant = Variant::precise,
+            Normalization normalization = Normalization::none) const;
+
+  // The precomputed kernel of a variant, for users who inline kutlog/simd/lobe.hpp: each was
+  // fitted and checked for the arithmetic it will run on, with fused multiply-add (AVX2,
+  // AVX-512: simd::has_fused_fma<Arch>) or without (SSE4.1).
+  const LobeKernel& kernel(Variant variant, Normalization normalization, bool fused_fma) const {
+    return kernels_[int(variant)][int(normalization)][fused_fma];
+  }
+
+ private:
+  double n_, Q_;
+  int k_;
+  double c_, cutoff_angle_, coef_exact_;
+  LobeKernel kernels_[2][2][2];  // variant, normalization, fused multiply-add
+};
+
+// Baselines over arrays, same data rule, dispatched like the lobe. out[i] = scale * t[i]^n
+// with xsimd::pow (what users have today) or with pow_u10; Schlick's t / (n - n t + t).
+// For normalized Blinn-Phong pass scale = ref::blinn_phong_exact_coef(n) (kutlog/reference.hpp).
+void blinn_phong_xsimd(const float* t, float* out, std::size_t count, float n, float scale = 1);
+void blinn_phong_u10(const float* t, float* out, std::size_t count, float n, float scale = 1);
+void schlick(const float* t, float* out, std::size_t count, float n);
+
+}  // namespace kutlog

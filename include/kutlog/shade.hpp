@@ -1,0 +1,47 @@
+// kutlog/shade.hpp: the stream API, for a rasterizer's tile or span.
+//
+// From structure-of-arrays vectors it forms the cosine the lobe needs (Blinn: N.H with
+// H = (L + V) / |L + V|; Phong: R.V with R = 2 (N.L) N - L) and writes
+//
+//   out[i] = F(t_i) * max(N_i . L_i, 0)      (F = coef * F_kutlog when normalized)
+//
+// N, L and V must be unit vectors (the cosines are not renormalized; rounding of normalized
+// vectors is covered by the lobe's data rule, t > 1 giving F(1)). Where L + V = 0 the half
+// vector is undefined and the specular term is 0. NaN in the data gives NaN.
+//
+// mask (optional, may be null): lane i is shaded where mask[i] != 0; elsewhere out[i] keeps
+// its value (AVX2 and AVX-512 store with a lane mask; SSE4.1, and the last partial batch, may
+// write the unchanged value back). Any count, any alignment; nothing outside [0, count) is
+// read or written. Thread-safe, no allocation.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "kutlog/lobe.hpp"
+
+namespace kutlog {
+
+// Three arrays of the components of n vectors.
+struct Vectors {
+  const float* x;
+  const float* y;
+  const float* z;
+};
+
+enum class Reflection : std::uint8_t { blinn, phong };
+
+struct ShadeOptions {
+  Variant variant = Variant::precise;
+  Normalization normalization = Normalization::exact_coef;
+  Reflection reflection = Reflection::blinn;
+};
+
+void shade(const Lobe& lobe, Vectors normal, Vectors to_light, Vectors to_viewer, float* out,
+           std::size_t count, const std::uint8_t* mask = nullptr, ShadeOptions options = {});
+
+// The same from cosines computed by the caller: out[i] = F(t[i]) * max(n_dot_l[i], 0).
+void shade(const Lobe& lobe, const float* t, const float* n_dot_l, float* out, std::size_t count,
+           const std::uint8_t* mask = nullptr, ShadeOptions options = {});
+
+}  // namespace kutlog

@@ -1,0 +1,87 @@
+// kutlog/simd/shade.hpp: the cosines of the stream API (kutlog/shade.hpp) on batches, and the
+// per-arch pieces of masked streams that xsimd 8.1 lacks (a byte mask as a batch_bool, a
+// store that leaves masked lanes alone).
+#pragma once
+
+#include <cstdint>
+#include <xsimd/xsimd.hpp>
+
+#include "kutlog/simd/float_ops.hpp"
+
+namespace kutlog::simd {
+
+template <class Arch>
+struct Vector3 {
+  floats<Arch> x, y, z;
+};
+
+template <class Arch>
+inline floats<Arch> dot(const Vector3<Arch>& a, const Vector3<Arch>& b) {
+  return mul_add(a.x, b.x, mul_add(a.y, b.y, a.z * b.z));
+}
+
+// N.H with H = (L + V) / |L + V|; 0 where L + V = 0.
+template <class Arch>
+inline floats<Arch> blinn_cosine(const Vector3<Arch>& normal, const Vector3<Arch>& to_light,
+                                 const Vector3<Arch>& to_viewer) {
+  using F = floats<Arch>;
+  const Vector3<Arch> sum{to_light.x + to_viewer.x, to_light.y + to_viewer.y,
+                          to_light.z + to_viewer.z};
+  const F length_squared = dot(sum, sum);
+  return xsimd::select(length_squared > F(0.0f), dot(normal, sum) / xsimd::sqrt(length_squared),
+                       F(0.0f));
+}
+
+// R.V with R = 2 (N.L) N - L, from N.L.
+template <class Arch>
+inline floats<Arch> phong_cosine(const Vector3<Arch>& normal, const Vector3<Arch>& to_light,
+                                 const Vector3<Arch>& to_viewer, floats<Arch> n_dot_l) {
+  return mul_sub(n_dot_l + n_dot_l, dot(normal, to_viewer), dot(to_light, to_viewer));
+}
+
+// mask[0 .. size) != 0 as a batch_bool (reads exactly size bytes).
+template <class Arch>
+inline xsimd::batch_bool<float, Arch> load_mask(const std::uint8_t* mask) {
+#if XSIMD_WITH_AVX512F
+  if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
+    const __m512i lanes = _mm512_cvtepu8_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(mask)));
+    return xsimd::batch_bool<float, Arch>(_mm512_test_epi32_mask(lanes, lanes));
+  } else
+#endif
+#if XSIMD_WITH_AVX2
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+    const __m256i lanes = _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(mask)));
+    return xsimd::batch_bool<float, Arch>(
+        _mm256_castsi256_ps(_mm256_cmpgt_epi32(lanes, _mm256_setzero_si256())));
+  } else
+#endif
+  {
+    std::int32_t four;
+    __builtin_memcpy(&four, mask, sizeof four);
+    const __m128i lanes = _mm_cvtepu8_epi32(_mm_cvtsi32_si128(four));
+    return xsimd::batch_bool<float, Arch>(_mm_castsi128_ps(_mm_cmpgt_epi32(lanes, _mm_setzero_si128())));
+  }
+}
+
+// Stores value where selected; elsewhere memory keeps its contents (AVX2 and AVX-512 do not
+// write those lanes; SSE4.1 writes back what it read).
+template <class Arch>
+inline void store_selected(float* out, floats<Arch> value, xsimd::batch_bool<float, Arch> selected) {
+#if XSIMD_WITH_AVX512F
+  if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
+    _mm512_mask_storeu_ps(out, selected, value);
+    return;
+  } else
+#endif
+#if XSIMD_WITH_AVX
+  if constexpr (std::is_base_of_v<xsimd::avx, Arch>) {
+    _mm256_maskstore_ps(out, _mm256_castps_si256(selected), value);
+    return;
+  } else
+#endif
+  {
+    xsimd::select(selected, value, floats<Arch>::load_unaligned(out)).store_unaligned(out);
+  }
+}
+
+}  // namespace kutlog::simd

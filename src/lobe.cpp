@@ -1,0 +1,228 @@
+// Setup of a Lobe: the per-material polynomial fits behind the kernels of kutlog/simd/lobe.hpp,
+// each accepted only after simulating the kernel's own arithmetic against the reference.
+#include "kutlog/lobe.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <vector>
+
+#include "kutlog/reference.hpp"
+
+namespace kutlog {
+namespace {
+
+using Real = long double;
+constexpr double kPi = std::numbers::pi;
+
+// Within what a variant promises (kutlog/lobe.hpp): a fit is accepted when the kernel's
+// arithmetic, simulated with and without fused multiply-add, stays within these; the rest of
+// the promise is margin for what the check grid does not sample.
+// The sampled maximum underestimates the maximum over every float (by up to ~30 % in the
+// epicenter, measured on SSE4.1, whose unfused multiply-adds round twice).
+struct Target {
+  double max_abs_error;      // relative to the scale (coef when normalized)
+  double max_epicenter_ulp;  // where F >= 0.6; infinite: no requirement
+};
+constexpr double kNone = std::numeric_limits<double>::infinity();
+constexpr Target kPreciseTarget{0x1p-23, 1.5}, kPreciseUnfusedTarget{0x1p-23, 1.3};
+constexpr Target kFastTarget{0x1p-17, kNone};
+
+// The lobe's shape against w = 1 - t, and 1 - shape without cancellation:
+// theta = acos(1 - w) = 2 asin(sqrt(w / 2)), 1 - cos^k(u) = -expm1(k log1p(-2 sin^2(u/2))).
+struct Shape {
+  double c;
+  int k;
+  double theta(double w) const { return 2 * std::asin(std::sqrt(0.5 * w)); }
+  double one_minus_power(double w, int power) const {
+    const double half_sine = std::sin(0.5 * c * theta(w));
+    return -std::expm1(power * std::log1p(-2 * half_sine * half_sine));
+  }
+};
+
+// Chebyshev interpolation of g on [0, w_max] at degree + 1 nodes, as monomial coefficients
+// (lowest first) in w - center, computed in long double. Expanded at the far end of the
+// support, the monomials of a lobe like e^(-a w / w_max) sum to about 1 on it, against e^a
+// from w = 0, which Horner's rule would pay in float.
+std::vector<Real> fit_monomials(const std::function<Real(Real)>& g, Real w_max, Real center,
+                                int degree) {
+  const int nodes = degree + 1;
+  std::vector<Real> values(nodes), chebyshev(nodes, 0);
+  for (int i = 0; i < nodes; ++i)
+    values[i] = g(w_max * (1 + std::cos(kPi * (i + 0.5L) / nodes)) / 2);
+  for (int j = 0; j < nodes; ++j) {
+    for (int i = 0; i < nodes; ++i) chebyshev[j] += values[i] * std::cos(kPi * j * (i + 0.5L) / nodes);
+    chebyshev[j] *= (j == 0 ? 1.0L : 2.0L) / nodes;
+  }
+  // sum_j a_j T_j(u) as monomials in u = 2 w / w_max - 1, with T_{j+1} = 2 u T_j - T_{j-1}.
+  std::vector<Real> in_u(nodes, 0), t_previous(nodes, 0), t_current(nodes, 0), t_next(nodes);
+  const auto accumulate = [&](Real a, const std::vector<Real>& t_j) {
+    for (int m = 0; m < nodes; ++m) in_u[m] += a * t_j[m];
+  };
+  t_previous[0] = 1;
+  accumulate(chebyshev[0], t_previous);
+  if (degree >= 1) {
+    t_current[1] = 1;
+    accumulate(chebyshev[1], t_current);
+  }
+  for (int j = 2; j < nodes; ++j) {
+    for (int m = 0; m < nodes; ++m)
+      t_next[m] = (m > 0 ? 2 * t_current[m - 1] : 0) - t_previous[m];
+    accumulate(chebyshev[j], t_next);
+    t_previous.swap(t_current);
+    t_current.swap(t_next);
+  }
+  // u = alpha (w - center) + beta, alpha = 2 / w_max, beta = 2 center / w_max - 1:
+  // coefficient of (w - center)^i = sum_m b_m C(m, i) alpha^i beta^(m - i).
+  const Real alpha = 2 / w_max, beta = 2 * center / w_max - 1;
+  std::vector<Real> shifted(nodes, 0);
+  for (int m = 0; m < nodes; ++m) {
+    Real binomial = 1;  // C(m, i)
+    for (int i = 0; i <= m; ++i) {
+      shifted[i] += in_u[m] * binomial * std::pow(alpha, Real(i)) * std::pow(beta, Real(m - i));
+      binomial = binomial * (m - i) / (i + 1);
+    }
+  }
+  return shifted;
+}
+
+// The float t at which the kernels are checked at setup: dense near t = 1 (the epicenter) and
+// uniform over the support, with the reference value at each.
+struct CheckPoint {
+  float t;
+  double reference;  // F(t), unscaled
+};
+std::vector<CheckPoint> check_points(const ref::KutlogLobe& reference, double w_max) {
+  constexpr int kPoints = 2048;
+  std::vector<CheckPoint> points;
+  const auto add = [&](double w) {
+    const float t = float(1 - w);
+    points.push_back({t, reference.eval(t)});
+  };
+  for (int j = 0; j <= kPoints; ++j) {
+    add(w_max * j / kPoints);
+    add(w_max * j * j / (double(kPoints) * kPoints));
+  }
+  // The epicenter (F >= 0.6) densely: the ULP bound is tightest there.
+  const double x_epicenter =
+      std::acos(std::pow(0.6, 1.0 / reference.k())) / reference.c();  // F(x) = 0.6
+  const double w_epicenter = 2 * std::pow(std::sin(0.5 * std::min(x_epicenter, ref::pi / 2)), 2);
+  for (int j = 0; j <= kPoints; ++j) add(w_epicenter * j / kPoints);
+  return points;
+}
+
+double ulp_of_float(double value) {
+  const int exponent = std::max(std::ilogb(value), -126);
+  return std::ldexp(1.0, exponent - 23);
+}
+
+bool meets(const std::vector<CheckPoint>& points, const Target& target, double scale,
+           const std::function<float(float)>& kernel) {
+  for (const CheckPoint& point : points) {
+    const double expected = scale * point.reference;
+    const double error = std::fabs(double(kernel(point.t)) - expected);
+    if (!(error <= target.max_abs_error * scale)) return false;
+    if (point.reference >= 0.6 && error > target.max_epicenter_ulp * ulp_of_float(expected))
+      return false;
+  }
+  return true;
+}
+
+// The float form's arithmetic, as the kernels do it with fused multiply-adds (AVX2, AVX-512)
+// or with a multiply and an add (SSE4.1).
+template <bool kFused>
+float float_polynomial(const LobeKernel& kernel, float t) {
+  const auto mul_add = [](float a, float b, float c) {
+    if constexpr (kFused) return std::fma(a, b, c);
+    volatile float product = a * b;  // rounded on its own, as SSE4.1 does
+    return product + c;
+  };
+  const float clamped = std::min(1.0f, t);
+  const float w = 1.0f - clamped, s = kernel.center_t - clamped;
+  float q = kernel.q_f[kernel.degree];
+  for (int i = kernel.degree; i-- > 0;) q = mul_add(q, s, kernel.q_f[i]);
+  return t <= kernel.t_cut ? 0.0f : mul_add(-w, q, kernel.scale_f);
+}
+
+// The double form's arithmetic, as the kernels do it.
+float double_base_power(const LobeKernel& kernel, float t) {
+  const double w = std::max(0.0, 1.0 - double(t));
+  double q = kernel.q_d[kernel.degree];
+  for (int i = kernel.degree; i-- > 0;) q = std::fma(q, w, kernel.q_d[i]);
+  double base = std::fma(-w, q, 1.0), power = 1;
+  for (int k = kernel.k; k > 0; k >>= 1, base *= base)
+    if (k & 1) power *= base;
+  return t <= kernel.t_cut ? 0.0f : float(kernel.scale_d * power);
+}
+
+// The kernel for one variant and one arithmetic (fused multiply-add or not).
+LobeKernel fit_kernel(const ref::KutlogLobe& reference, const Shape& shape, double w_max,
+                      double scale, const std::vector<CheckPoint>& points, const Target& target,
+                      bool fused) {
+  LobeKernel kernel;
+  // F = 0 for t <= cos(gran), and below the horizon (t <= 0) when gran > pi/2: the largest
+  // float at or below the cut.
+  const double cut = reference.cutoff_angle() >= kPi / 2 ? 0.0 : std::cos(reference.cutoff_angle());
+  kernel.t_cut = float(cut);
+  if (double(kernel.t_cut) > cut) kernel.t_cut = std::nextafter(kernel.t_cut, -1.0f);
+  kernel.scale_f = float(scale);
+  kernel.scale_d = scale;
+  kernel.k = shape.k;
+  const auto q_of = [&](int power) {
+    return [&shape, power](Real w) { return Real(shape.one_minus_power(double(w), power)) / w; };
+  };
+  // Float evaluation of F = 1 - w q, q in powers of s = center_t - t, the distance to the
+  // cut-off (center_t ~ cos(gran)), if some degree meets the target: near the cut-off, where
+  // 1 - w q cancels, s p(s) vanishes and only q's constant term is rounded; near t = 1 the
+  // errors of q are multiplied by w, which is small there.
+  kernel.form = LobeKernel::Form::float_polynomial;
+  kernel.center_t = float(1 - w_max);
+  const Real center = 1 - Real(kernel.center_t);  // the center the float kernel really uses
+  for (int degree = 1; degree <= 16; ++degree) {
+    const std::vector<Real> q = fit_monomials(q_of(shape.k), w_max, center, degree);
+    kernel.degree = degree;
+    for (int i = 0; i <= degree; ++i) kernel.q_f[i] = float(scale * q[i]);
+    const bool accepted =
+        fused ? meets(points, target, scale, [&](float t) { return float_polynomial<true>(kernel, t); })
+              : meets(points, target, scale, [&](float t) { return float_polynomial<false>(kernel, t); });
+    if (accepted)
+      return kernel;
+  }
+  // Otherwise B^k in double, B = cos(c theta) = 1 - w q(w), which converges for every lobe.
+  kernel.form = LobeKernel::Form::double_base_power;
+  for (int degree = 1; degree <= LobeKernel::kMaxDegree; ++degree) {
+    const std::vector<Real> q = fit_monomials(q_of(1), w_max, 0, degree);
+    kernel.degree = degree;
+    for (int i = 0; i <= degree; ++i) kernel.q_d[i] = double(q[i]);
+    if (meets(points, target, scale, [&](float t) { return double_base_power(kernel, t); }))
+      return kernel;
+  }
+  return kernel;  // the highest degree: its error is what the exhaustive tests measure
+}
+
+}  // namespace
+
+Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
+  const ref::KutlogLobe reference(n, k, Q);  // validates
+  c_ = reference.c();
+  cutoff_angle_ = reference.cutoff_angle();
+  coef_exact_ = reference.coef_exact();
+  const double limit = reference.integration_limit();
+  const double half_sine = std::sin(0.5 * limit);
+  const double w_max = 2 * half_sine * half_sine;  // 1 - cos(min(gran, pi/2))
+  const Shape shape{c_, k_};
+  const std::vector<CheckPoint> points = check_points(reference, w_max);
+  for (Variant variant : {Variant::precise, Variant::fast})
+    for (Normalization normalization : {Normalization::none, Normalization::exact_coef})
+      for (bool fused : {true, false}) {
+        const Target& target = variant == Variant::fast ? kFastTarget
+                               : fused                  ? kPreciseTarget
+                                                        : kPreciseUnfusedTarget;
+        kernels_[int(variant)][int(normalization)][fused] = fit_kernel(
+            reference, shape, w_max, normalization == Normalization::exact_coef ? coef_exact_ : 1.0,
+            points, target, fused);
+      }
+}
+
+}  // namespace kutlog

@@ -1,0 +1,12 @@
+// A lobe's parameters, for parameterized tests.
+#pragma once
+
+namespace kutlog {
+
+struct LobeCase {
+  double n;
+  int k;
+  double Q;
+};
+
+}  // namespace kutlog

@@ -1,0 +1,34 @@
+// Accuracy of the lobe kernels of a kutlog::Lobe against the scalar reference, over the floats
+// t in [-1, 1], shared by kutlog-ulp and the tests.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+
+#include "kutlog/lobe.hpp"
+
+namespace kutlog::tools {
+
+struct LobeErrors {
+  double max_abs_error = 0;      // |out - scale F| / scale (scale = coef when normalized)
+  double max_epicenter_ulp = 0;  // |out - scale F| in ulps of scale F, where F >= 0.6
+  float worst_abs_input = std::numeric_limits<float>::quiet_NaN();
+  float worst_ulp_input = std::numeric_limits<float>::quiet_NaN();
+  std::uint64_t inputs = 0;
+};
+
+// The kernels in the order variant x normalization: precise, precise * coef, fast, fast * coef.
+inline constexpr Variant kLobeVariants[] = {Variant::precise, Variant::fast};
+inline constexpr Normalization kLobeNormalizations[] = {Normalization::none,
+                                                        Normalization::exact_coef};
+
+// The floats t in [-1, 1] through lobe.eval on the active arch, against the reference
+// (computed once, for the four kernels): every `stride`-th float of the support (t above the
+// cut; stride 1: every float), and below it, where the reference is 0 and the kernels decide
+// by one comparison, every (61 stride)-th float plus every float within 2^16 of the cut and of
+// 0. There the kernels must give exactly 0.
+std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, std::uint32_t stride = 1,
+                                       unsigned threads = 0);
+
+}  // namespace kutlog::tools
