@@ -1,7 +1,9 @@
 // Benchmark inputs: L1-resident arrays (4096 floats) of values from the range that matters.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <random>
 #include <vector>
 
@@ -17,5 +19,28 @@ inline std::vector<float> uniform_inputs(float lo, float hi, unsigned seed = 1) 
   for (float& value : values) value = distribution(engine);
   return values;
 }
+
+// Two inputs and an output of kArrayLength floats in one 64-byte aligned block, each array
+// half a page (modulo 4 KiB) away from the next. With arrays at distances that are multiples
+// of 4 KiB, or just above, a load can falsely wait on an earlier store to the same low 12
+// address bits (4K aliasing): where the heap happened to put an output vector, pow_xsimd ran
+// at a quarter of its speed and a division-bound kernel at a fifteenth.
+class BenchArrays {
+ public:
+  BenchArrays(const std::vector<float>& x, const std::vector<float>& y) : block_(3 * kStride + 16) {
+    const std::size_t misalignment = reinterpret_cast<std::uintptr_t>(block_.data()) % 64 / 4;
+    base_ = block_.data() + (16 - misalignment) % 16;
+    std::copy(x.begin(), x.end(), this->x());
+    std::copy(y.begin(), y.end(), this->y());
+  }
+  float* x() { return base_; }
+  float* y() { return base_ + kStride; }
+  float* out() { return base_ + 2 * kStride; }
+
+ private:
+  static constexpr std::size_t kStride = kArrayLength + 512;  // + 2 KiB
+  std::vector<float> block_;
+  float* base_;
+};
 
 }  // namespace kutlog::bench

@@ -22,11 +22,13 @@ void register_benchmarks_avx512();
 
 namespace {
 template <class Function>
-void scalar_unary(benchmark::State& state, Function function, std::vector<float> x) {
-  std::vector<float> out(kArrayLength);
+void scalar_unary(benchmark::State& state, Function function, const std::vector<float>& inputs) {
+  BenchArrays arrays(inputs, inputs);
+  float* const x = arrays.x();
+  float* const out = arrays.out();
   for (auto _ : state) {
     for (std::size_t i = 0; i < kArrayLength; ++i) out[i] = function(x[i]);
-    benchmark::DoNotOptimize(out.data());
+    benchmark::DoNotOptimize(out);
     benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(state.iterations() * std::int64_t(kArrayLength));

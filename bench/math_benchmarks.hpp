@@ -12,18 +12,19 @@
 
 namespace kutlog::bench {
 
-// Applies `kernel` over arrays of kArrayLength floats (a multiple of every batch size).
+// Applies `kernel` over arrays of kArrayLength floats (a multiple of every batch size), laid
+// out by BenchArrays so that loads never falsely wait on the stores (4K aliasing).
 template <class Arch, class Kernel>
 void run_batches(benchmark::State& state, const Kernel& kernel, const std::vector<float>& x,
                  const std::vector<float>& y) {
   using F = xsimd::batch<float, Arch>;
-  std::vector<float> out(kArrayLength);
+  BenchArrays arrays(x, y);
   for (auto _ : state) {
     for (std::size_t i = 0; i < kArrayLength; i += F::size) {
-      const F a = F::load_unaligned(x.data() + i), b = F::load_unaligned(y.data() + i);
-      kernel(a, b).store_unaligned(out.data() + i);
+      const F a = F::load_aligned(arrays.x() + i), b = F::load_aligned(arrays.y() + i);
+      kernel(a, b).store_aligned(arrays.out() + i);
     }
-    benchmark::DoNotOptimize(out.data());
+    benchmark::DoNotOptimize(arrays.out());
     benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(state.iterations() * std::int64_t(kArrayLength));

@@ -15,13 +15,43 @@ void RatioCollector::ReportRuns(const std::vector<Run>& runs) {
 }
 
 void RatioCollector::print_ratios(std::FILE* out) const {
-  const auto rate = [&](const std::string& name) {
-    const auto found = throughput_.find(name);
-    return found == throughput_.end() ? 0.0 : found->second;
-  };
-  std::fprintf(out,
-               "\n| function | arch | kutlog_u10 (M/s) | xsimd (M/s) | kutlog / xsimd | "
-               "std scalar (M/s) | kutlog / std |\n|---|---|---:|---:|---:|---:|---:|\n");
+  print_math_ratios(out);
+  print_lobe_ratios(out);
+}
+
+double RatioCollector::rate(const std::string& name) const {
+  const auto found = throughput_.find(name);
+  return found == throughput_.end() ? 0.0 : found->second;
+}
+
+void RatioCollector::print_lobe_ratios(std::FILE* out) const {
+  // Throughput of each lobe kernel over that of pow_xsimd at the same n and arch.
+  bool header = false;
+  for (const char* arch : {"avx512", "avx2", "sse4.1"})
+    for (int n : {10, 100, 1000}) {
+      const std::string tail = "/arch:" + std::string(arch);
+      const std::string at_n = "/n:" + std::to_string(n);
+      const double pow_xsimd = rate("lobe/pow_xsimd" + at_n + tail);
+      if (pow_xsimd == 0) continue;
+      if (!header) {
+        std::fprintf(out,
+                     "\n| arch | n | k | pow_xsimd (M/s) | kutlog_precise | kutlog_fast | "
+                     "pow_precise | schlick |\n|---|---:|---:|---:|---:|---:|---:|---:|\n");
+        header = true;
+      }
+      for (int k : {1, 3, 5}) {
+        const std::string at_k = at_n + "/k:" + std::to_string(k);
+        std::fprintf(out, "| %s | %d | %d | %.0f | %.2fx | %.2fx | %.2fx | %.2fx |\n", arch, n, k,
+                     pow_xsimd / 1e6, rate("lobe/kutlog_precise" + at_k + tail) / pow_xsimd,
+                     rate("lobe/kutlog_fast" + at_k + tail) / pow_xsimd,
+                     rate("lobe/pow_precise" + at_n + tail) / pow_xsimd,
+                     rate("lobe/schlick" + at_n + tail) / pow_xsimd);
+      }
+    }
+}
+
+void RatioCollector::print_math_ratios(std::FILE* out) const {
+  bool header = false;
   for (const char* function : {"acos", "cos", "exp", "log", "pow"})
     for (const char* arch : {"avx512", "avx2", "sse4.1"}) {
       const std::string suffix = std::string("/arch:") + arch;
@@ -29,6 +59,12 @@ void RatioCollector::print_ratios(std::FILE* out) const {
       const double xsimd = rate(std::string("math/") + function + "/xsimd" + suffix);
       const double scalar = rate(std::string("math/") + function + "/std/arch:scalar");
       if (ours == 0) continue;
+      if (!header) {
+        std::fprintf(out,
+                     "\n| function | arch | kutlog_u10 (M/s) | xsimd (M/s) | kutlog / xsimd | "
+                     "std scalar (M/s) | kutlog / std |\n|---|---|---:|---:|---:|---:|---:|\n");
+        header = true;
+      }
       std::fprintf(out, "| %s | %s | %.0f | %.0f | %.2f | %.0f | %.1f |\n", function, arch,
                    ours / 1e6, xsimd / 1e6, xsimd ? ours / xsimd : 0.0, scalar / 1e6,
                    scalar ? ours / scalar : 0.0);

@@ -19,15 +19,22 @@ constexpr double kPi = std::numbers::pi;
 // Within what a variant promises (kutlog/lobe.hpp): a fit is accepted when the kernel's
 // arithmetic, simulated with and without fused multiply-add, stays within these; the rest of
 // the promise is margin for what the check grid does not sample.
-// The sampled maximum underestimates the maximum over every float (by up to ~30 % in the
-// epicenter, measured on SSE4.1, whose unfused multiply-adds round twice).
+// The simulation reproduces the kernels' arithmetic bit for bit, so where the support (or the
+// epicenter) is checked float by float (few enough floats) the target is close to the
+// promise; a sampled maximum underestimates the true one (by up to ~30 % in the epicenter,
+// measured on SSE4.1, whose unfused multiply-adds round twice), hence the margins.
 struct Target {
-  double max_abs_error;      // relative to the scale (coef when normalized)
-  double max_epicenter_ulp;  // where F >= 0.6; infinite: no requirement
+  double max_abs_error;  // relative to the scale (coef when normalized), sampled
+  double max_epicenter_ulp;  // where F >= 0.6, sampled; infinite: no requirement
+  double max_abs_error_every_float;      // the same, when every float is checked
+  double max_epicenter_ulp_every_float;
 };
 constexpr double kNone = std::numeric_limits<double>::infinity();
-constexpr Target kPreciseTarget{0x1p-23, 1.5}, kPreciseUnfusedTarget{0x1p-23, 1.3};
-constexpr Target kFastTarget{0x1p-17, kNone};
+constexpr Target kPreciseTarget{0x1p-23, 1.5, 0x1.ep-23, 1.9};
+constexpr Target kPreciseUnfusedTarget{0x1p-23, 1.3, 0x1.ep-23, 1.9};
+constexpr Target kFastTarget{0x1p-17, kNone, 0x1.ep-17, kNone};
+// Supports and epicenters of at most this many floats are checked float by float.
+constexpr double kEveryFloat = 1 << 17;
 
 // The lobe's shape against w = 1 - t, and 1 - shape without cancellation:
 // theta = acos(1 - w) = 2 asin(sqrt(w / 2)), 1 - cos^k(u) = -expm1(k log1p(-2 sin^2(u/2))).
@@ -93,9 +100,22 @@ struct CheckPoint {
   float t;
   double reference;  // F(t), unscaled
 };
-std::vector<CheckPoint> check_points(const ref::KutlogLobe& reference, double w_max) {
+struct CheckPoints {
+  std::vector<CheckPoint> points;
+  bool every_support_float = false, every_epicenter_float = false;
+};
+// Every float of [t_lo, 1), if there are at most kEveryFloat of them (their spacing is at
+// least 2^-24 below 1).
+bool add_every_float(const ref::KutlogLobe& reference, float t_lo, std::vector<CheckPoint>& points) {
+  if ((1.0 - t_lo) * 0x1p24 > kEveryFloat) return false;
+  for (float t = t_lo; t < 1.0f; t = std::nextafter(t, 2.0f)) points.push_back({t, reference.eval(t)});
+  return true;
+}
+
+CheckPoints check_points(const ref::KutlogLobe& reference, double w_max) {
   constexpr int kPoints = 2048;
   std::vector<CheckPoint> points;
+  if (add_every_float(reference, float(1 - w_max), points)) return {points, true, true};
   const auto add = [&](double w) {
     const float t = float(1 - w);
     points.push_back({t, reference.eval(t)});
@@ -108,8 +128,9 @@ std::vector<CheckPoint> check_points(const ref::KutlogLobe& reference, double w_
   const double x_epicenter =
       std::acos(std::pow(0.6, 1.0 / reference.k())) / reference.c();  // F(x) = 0.6
   const double w_epicenter = 2 * std::pow(std::sin(0.5 * std::min(x_epicenter, ref::pi / 2)), 2);
+  if (add_every_float(reference, float(1 - w_epicenter), points)) return {points, false, true};
   for (int j = 0; j <= kPoints; ++j) add(w_epicenter * j / kPoints);
-  return points;
+  return {points, false, false};
 }
 
 double ulp_of_float(double value) {
@@ -117,13 +138,17 @@ double ulp_of_float(double value) {
   return std::ldexp(1.0, exponent - 23);
 }
 
-bool meets(const std::vector<CheckPoint>& points, const Target& target, double scale,
+bool meets(const CheckPoints& check, const Target& target, double scale,
            const std::function<float(float)>& kernel) {
-  for (const CheckPoint& point : points) {
-    const double expected = scale * point.reference;
-    const double error = std::fabs(double(kernel(point.t)) - expected);
-    if (!(error <= target.max_abs_error * scale)) return false;
-    if (point.reference >= 0.6 && error > target.max_epicenter_ulp * ulp_of_float(expected))
+  const double epicenter_ulp = check.every_epicenter_float ? target.max_epicenter_ulp_every_float
+                                                           : target.max_epicenter_ulp;
+  const double abs_error = check.every_support_float ? target.max_abs_error_every_float
+                                                     : target.max_abs_error;
+  // Relative to the scale (coef when normalized): |out / scale - F|, in the units of F.
+  for (const CheckPoint& point : check.points) {
+    const double error = std::fabs(double(kernel(point.t)) / scale - point.reference);
+    if (!(error <= abs_error)) return false;
+    if (point.reference >= 0.6 && error > epicenter_ulp * ulp_of_float(point.reference))
       return false;
   }
   return true;
@@ -158,8 +183,7 @@ float double_base_power(const LobeKernel& kernel, float t) {
 
 // The kernel for one variant and one arithmetic (fused multiply-add or not).
 LobeKernel fit_kernel(const ref::KutlogLobe& reference, const Shape& shape, double w_max,
-                      double scale, const std::vector<CheckPoint>& points, const Target& target,
-                      bool fused) {
+                      double scale, const CheckPoints& points, const Target& target, bool fused) {
   LobeKernel kernel;
   // F = 0 for t <= cos(gran), and below the horizon (t <= 0) when gran > pi/2: the largest
   // float at or below the cut.
@@ -212,7 +236,7 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
   const double half_sine = std::sin(0.5 * limit);
   const double w_max = 2 * half_sine * half_sine;  // 1 - cos(min(gran, pi/2))
   const Shape shape{c_, k_};
-  const std::vector<CheckPoint> points = check_points(reference, w_max);
+  const CheckPoints points = check_points(reference, w_max);
   for (Variant variant : {Variant::precise, Variant::fast})
     for (Normalization normalization : {Normalization::none, Normalization::exact_coef})
       for (bool fused : {true, false}) {

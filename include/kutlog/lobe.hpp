@@ -16,7 +16,8 @@
 // 10000}, k in 1..5, Q in {0.1, 0.5, 0.9}, every arch; kutlog/accuracy.hpp has the numbers):
 //   precise: |error| <= 2^-22 everywhere, <= 2 ULP where F >= 0.6 (the epicenter);
 //   fast:    |error| <= 2^-16 everywhere.
-// Normalized results (coef * F) are measured relative to coef.
+// Normalized results (coef * F) are measured relative to coef: |out / coef - F| against the
+// same bounds.
 //
 // Data rule (the reference's): t > 1 gives F(1) = 1 (coef when normalized), t at or below
 // cos(gran) and t <= 0 give 0, NaN gives NaN. Any count, any alignment, out may equal t.

@@ -10,9 +10,11 @@
 
 namespace kutlog::tools {
 
+// Normalized results are measured relative to coef: e = |out / scale - F| (scale = coef when
+// normalized, else 1).
 struct LobeErrors {
-  double max_abs_error = 0;      // |out - scale F| / scale (scale = coef when normalized)
-  double max_epicenter_ulp = 0;  // |out - scale F| in ulps of scale F, where F >= 0.6
+  double max_abs_error = 0;      // e
+  double max_epicenter_ulp = 0;  // e in ulps of F (float), where F >= 0.6
   float worst_abs_input = std::numeric_limits<float>::quiet_NaN();
   float worst_ulp_input = std::numeric_limits<float>::quiet_NaN();
   std::uint64_t inputs = 0;

@@ -41,9 +41,8 @@ class PreparedLobe {
   }
 
   F operator()(F t) const {
-    const F value = kernel_.form == LobeKernel::Form::float_polynomial ? float_form(t)
-                                                                        : double_form(t);
-    return xsimd::select(t <= t_cut_, F(0.0f), value);
+    if (kernel_.form == LobeKernel::Form::float_polynomial) return float_form(t);
+    return xsimd::select(t <= t_cut_, F(0.0f), double_form(t));
   }
 
  private:
@@ -62,7 +61,16 @@ class PreparedLobe {
       q = q_[kernel_.degree];
       for (int i = kernel_.degree; i-- > 0;) q = mul_add(q, s, q_[i]);
     }
-    return neg_mul_add(w, q, scale_);
+    return cut_at(t, w, q);
+  }
+
+  // scale - w q where t > t_cut (or t is NaN), else 0. AVX-512 does it in one masked FMA.
+  F cut_at(F t, F w, F q) const {
+#if XSIMD_WITH_AVX512F
+    if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>)
+      return _mm512_maskz_fnmadd_ps(_mm512_cmp_ps_mask(t, t_cut_, _CMP_NLE_UQ), w, q, scale_);
+#endif
+    return xsimd::select(t <= t_cut_, F(0.0f), neg_mul_add(w, q, scale_));
   }
 
   // scale (1 - w q(w))^k in double lanes, one rounding to float.
