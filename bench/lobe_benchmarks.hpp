@@ -1,17 +1,17 @@
-// Benchmarks of the shading lobes for one arch, named with the tokens the ratio report reads:
-// lobe/<kernel>/n:<n>/k:<k>/arch:<arch>, kernel in kutlog_precise, kutlog_fast, pow_xsimd,
-// pow_precise, schlick, copy. Included by bench/arch/<arch>.cpp with that arch's flags.
+// Benchmarks of the shading lobes, named with the tokens the ratio report reads:
+// lobe/<kernel>/n:<n>/k:<k>/arch:<arch>, kernel in kutlog_precise, kutlog_fast,
+// kutlog_perlane, pow_xsimd, pow_precise, schlick, copy.
 #pragma once
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
-#include <xsimd/xsimd.hpp>
 
 #include "inputs.hpp"
 #include "kutlog/lobe.hpp"
-#include "kutlog/simd/lobe.hpp"
-#include "math_benchmarks.hpp"
+#include "kutlog/dispatch.hpp"
 
 namespace kutlog::bench {
 
@@ -27,53 +27,74 @@ inline std::vector<float> lobe_inputs(const Lobe& lobe) {
   return angles;
 }
 
-// One input: the math benchmarks' loop with the second input unused.
-template <class Arch, class Kernel>
-void run_lobe(benchmark::State& state, const Kernel& kernel, const std::vector<float>& t) {
-  using F = xsimd::batch<float, Arch>;
-  run_batches<Arch>(state, [&](F x, F) { return kernel(x); }, t, t);
+// Runs an array function of the library, with the arch forced, over the inputs.
+template <class Function>
+void run_array(benchmark::State& state, Arch arch, const std::vector<float>& x,
+               const std::vector<float>& y, const Function& function) {
+  const ScopedArch forced(arch);
+  BenchArrays arrays(x, y);
+  for (auto _ : state) {
+    function(arrays.x(), arrays.y(), arrays.out());
+    benchmark::DoNotOptimize(arrays.out());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * std::int64_t(kArrayLength));
 }
 
-template <class Arch>
-void register_lobe_benchmarks(const std::string& arch) {
-  using F = xsimd::batch<float, Arch>;
+// Through the public array functions (kutlog/lobe.hpp), as users call them.
+inline void register_lobe_benchmarks(Arch arch) {
+  const std::string arch_label(arch_name(arch));
+  constexpr std::size_t N = kArrayLength;
   for (int n : kLobeExponents) {
-    const std::string suffix = "/n:" + std::to_string(n);
+    const std::string at_n = "/n:" + std::to_string(n);
     const auto add = [&](const std::string& kernel, const std::string& k, auto body) {
-      benchmark::RegisterBenchmark(("lobe/" + kernel + suffix + k + "/arch:" + arch).c_str(), body);
+      benchmark::RegisterBenchmark(("lobe/" + kernel + at_n + k + "/arch:" + arch_label).c_str(),
+                                   body);
     };
     for (int k : kLobePowers) {
-      // The lobe is built inside the benchmark (once per run), so registering costs nothing.
+      const std::string at_k = "/k:" + std::to_string(k);
+      // Lobes are built inside the benchmarks (once per run), so registering costs nothing.
       for (Variant variant : {Variant::precise, Variant::fast})
-        add(variant == Variant::precise ? "kutlog_precise" : "kutlog_fast",
-            "/k:" + std::to_string(k), [=](benchmark::State& state) {
+        add(variant == Variant::precise ? "kutlog_precise" : "kutlog_fast", at_k,
+            [=](benchmark::State& state) {
               const Lobe lobe(n, k, kLobeAnchor);
-              const LobeKernel& kernel =
-                  lobe.kernel(variant, Normalization::exact_coef, simd::has_fused_fma<Arch>);
-              const simd::PreparedLobe<Arch> prepared(kernel);
-              state.SetLabel(std::string(kernel.form == LobeKernel::Form::float_polynomial
-                                             ? "float"
-                                             : "double") +
-                             " degree " + std::to_string(kernel.degree));
-              run_lobe<Arch>(state, prepared, lobe_inputs(lobe));
+              const std::vector<float> t = lobe_inputs(lobe);
+              run_array(state, arch, t, t, [&](const float* x, const float*, float* out) {
+                lobe.eval(x, out, N, variant, Normalization::exact_coef);
+              });
             });
+      add("kutlog_perlane", at_k, [=](benchmark::State& state) {
+        // A glossiness map around n: each lane's n log-uniform in [n/2, 2n].
+        const PerLaneLobe lobe(k, kLobeAnchor, std::max(k, n / 2), 2.0 * n);
+        std::vector<float> exponents = uniform_inputs(std::log(n / 2.0f), std::log(2.0f * n), 2);
+        for (float& e : exponents) e = std::max(float(k), std::exp(e));
+        run_array(state, arch, lobe_inputs(Lobe(n, k, kLobeAnchor)), exponents,
+                  [&](const float* x, const float* y, float* out) { lobe.eval(x, y, out, N); });
+      });
     }
     const std::vector<float> t = lobe_inputs(Lobe(n, 1, kLobeAnchor));
+    const float exponent = float(n);
     add("pow_xsimd", "", [=](benchmark::State& state) {
-      const F exponent{float(n)};
-      run_lobe<Arch>(state, [&](F v) { return simd::blinn_phong_xsimd(v, exponent); }, t);
+      run_array(state, arch, t, t, [&](const float* x, const float*, float* out) {
+        blinn_phong_xsimd(x, out, N, exponent);
+      });
     });
     add("pow_precise", "", [=](benchmark::State& state) {
-      const F exponent{float(n)};
-      run_lobe<Arch>(state, [&](F v) { return simd::blinn_phong_u10(v, exponent); }, t);
+      run_array(state, arch, t, t, [&](const float* x, const float*, float* out) {
+        blinn_phong_u10(x, out, N, exponent);
+      });
     });
     add("schlick", "", [=](benchmark::State& state) {
-      const F exponent{float(n)};
-      run_lobe<Arch>(state, [&](F v) { return simd::schlick(v, exponent); }, t);
+      run_array(state, arch, t, t, [&](const float* x, const float*, float* out) {
+        schlick(x, out, N, exponent);
+      });
     });
   }
-  benchmark::RegisterBenchmark(("lobe/copy/arch:" + arch).c_str(), [](benchmark::State& state) {
-    run_lobe<Arch>(state, [](F v) { return v; }, uniform_inputs(0, 1));
+  benchmark::RegisterBenchmark(("lobe/copy/arch:" + arch_label).c_str(), [arch](benchmark::State& state) {
+    const std::vector<float> t = uniform_inputs(0, 1);
+    run_array(state, arch, t, t, [](const float* x, const float*, float* out) {
+      std::copy(x, x + N, out);
+    });
   });
 }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "inputs.hpp"
+#include "lobe_benchmarks.hpp"
 #include "kutlog/dispatch.hpp"
 #include "ratio_report.hpp"
 
@@ -64,6 +65,7 @@ int main(int argc, char** argv) {
   if (arch_supported(Arch::avx512)) bench::register_benchmarks_avx512();
   if (arch_supported(Arch::avx2)) bench::register_benchmarks_avx2();
   if (arch_supported(Arch::sse4_1)) bench::register_benchmarks_sse4_1();
+  for (Arch arch : supported_archs()) bench::register_lobe_benchmarks(arch);
   bench::register_scalar_benchmarks();
 
   bench::RatioCollector collector;

@@ -36,14 +36,17 @@ void RatioCollector::print_lobe_ratios(std::FILE* out) const {
       if (!header) {
         std::fprintf(out,
                      "\n| arch | n | k | pow_xsimd (M/s) | kutlog_precise | kutlog_fast | "
-                     "pow_precise | schlick |\n|---|---:|---:|---:|---:|---:|---:|---:|\n");
+                     "kutlog_perlane | pow_precise | schlick |\n"
+                     "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
         header = true;
       }
       for (int k : {1, 3, 5}) {
         const std::string at_k = at_n + "/k:" + std::to_string(k);
-        std::fprintf(out, "| %s | %d | %d | %.0f | %.2fx | %.2fx | %.2fx | %.2fx |\n", arch, n, k,
-                     pow_xsimd / 1e6, rate("lobe/kutlog_precise" + at_k + tail) / pow_xsimd,
+        std::fprintf(out, "| %s | %d | %d | %.0f | %.2fx | %.2fx | %.2fx | %.2fx | %.2fx |\n",
+                     arch, n, k, pow_xsimd / 1e6,
+                     rate("lobe/kutlog_precise" + at_k + tail) / pow_xsimd,
                      rate("lobe/kutlog_fast" + at_k + tail) / pow_xsimd,
+                     rate("lobe/kutlog_perlane" + at_k + tail) / pow_xsimd,
                      rate("lobe/pow_precise" + at_n + tail) / pow_xsimd,
                      rate("lobe/schlick" + at_n + tail) / pow_xsimd);
       }

@@ -185,6 +185,11 @@ void Lobe::eval(const float* t, float* out, std::size_t count, Variant variant,
   const detail::KernelTable& table = active_table();
   table.kutlog_lobe(kernel(variant, normalization, table.fused_fma), t, out, count);
 }
+void PerLaneLobe::eval(const float* t, const float* n, float* out, std::size_t count,
+                       Normalization normalization) const {
+  active_table().kutlog_per_lane(kernel_, normalization == Normalization::exact_coef, t, n, out,
+                                 count);
+}
 void blinn_phong_xsimd(const float* t, float* out, std::size_t count, float n, float scale) {
   active_table().blinn_phong_xsimd(t, n, scale, out, count);
 }

@@ -9,11 +9,12 @@
 #include <vector>
 
 #include "kutlog/reference.hpp"
+#include "polynomial_fit.hpp"
 
 namespace kutlog {
+using detail::Real;
 namespace {
 
-using Real = long double;
 constexpr double kPi = std::numbers::pi;
 
 // Within what a variant promises (kutlog/lobe.hpp): a fit is accepted when the kernel's
@@ -48,16 +49,14 @@ struct Shape {
   }
 };
 
-// Chebyshev interpolation of g on [0, w_max] at degree + 1 nodes, as monomial coefficients
-// (lowest first) in w - center, computed in long double. Expanded at the far end of the
-// support, the monomials of a lobe like e^(-a w / w_max) sum to about 1 on it, against e^a
-// from w = 0, which Horner's rule would pay in float.
-std::vector<Real> fit_monomials(const std::function<Real(Real)>& g, Real w_max, Real center,
-                                int degree) {
+}  // namespace
+
+std::vector<Real> detail::fit_monomials(const std::function<Real(Real)>& g, Real lo, Real hi,
+                                Real center, int degree) {
   const int nodes = degree + 1;
   std::vector<Real> values(nodes), chebyshev(nodes, 0);
   for (int i = 0; i < nodes; ++i)
-    values[i] = g(w_max * (1 + std::cos(kPi * (i + 0.5L) / nodes)) / 2);
+    values[i] = g(lo + (hi - lo) * (1 + std::cos(kPi * (i + 0.5L) / nodes)) / 2);
   for (int j = 0; j < nodes; ++j) {
     for (int i = 0; i < nodes; ++i) chebyshev[j] += values[i] * std::cos(kPi * j * (i + 0.5L) / nodes);
     chebyshev[j] *= (j == 0 ? 1.0L : 2.0L) / nodes;
@@ -80,9 +79,9 @@ std::vector<Real> fit_monomials(const std::function<Real(Real)>& g, Real w_max, 
     t_previous.swap(t_current);
     t_current.swap(t_next);
   }
-  // u = alpha (w - center) + beta, alpha = 2 / w_max, beta = 2 center / w_max - 1:
-  // coefficient of (w - center)^i = sum_m b_m C(m, i) alpha^i beta^(m - i).
-  const Real alpha = 2 / w_max, beta = 2 * center / w_max - 1;
+  // u = alpha (x - center) + beta, alpha = 2 / (hi - lo), beta = alpha (center - lo) - 1:
+  // coefficient of (x - center)^i = sum_m b_m C(m, i) alpha^i beta^(m - i).
+  const Real alpha = 2 / (hi - lo), beta = alpha * (center - lo) - 1;
   std::vector<Real> shifted(nodes, 0);
   for (int m = 0; m < nodes; ++m) {
     Real binomial = 1;  // C(m, i)
@@ -93,6 +92,8 @@ std::vector<Real> fit_monomials(const std::function<Real(Real)>& g, Real w_max, 
   }
   return shifted;
 }
+
+namespace {
 
 // The float t at which the kernels are checked at setup: dense near t = 1 (the epicenter) and
 // uniform over the support, with the reference value at each.
@@ -204,7 +205,7 @@ LobeKernel fit_kernel(const ref::KutlogLobe& reference, const Shape& shape, doub
   kernel.center_t = float(1 - w_max);
   const Real center = 1 - Real(kernel.center_t);  // the center the float kernel really uses
   for (int degree = 1; degree <= 16; ++degree) {
-    const std::vector<Real> q = fit_monomials(q_of(shape.k), w_max, center, degree);
+    const std::vector<Real> q = detail::fit_monomials(q_of(shape.k), 0, w_max, center, degree);
     kernel.degree = degree;
     for (int i = 0; i <= degree; ++i) kernel.q_f[i] = float(scale * q[i]);
     const bool accepted =
@@ -216,7 +217,7 @@ LobeKernel fit_kernel(const ref::KutlogLobe& reference, const Shape& shape, doub
   // Otherwise B^k in double, B = cos(c theta) = 1 - w q(w), which converges for every lobe.
   kernel.form = LobeKernel::Form::double_base_power;
   for (int degree = 1; degree <= LobeKernel::kMaxDegree; ++degree) {
-    const std::vector<Real> q = fit_monomials(q_of(1), w_max, 0, degree);
+    const std::vector<Real> q = detail::fit_monomials(q_of(1), 0, w_max, 0, degree);
     kernel.degree = degree;
     for (int i = 0; i <= degree; ++i) kernel.q_d[i] = double(q[i]);
     if (meets(points, target, scale, [&](float t) { return double_base_power(kernel, t); }))

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -123,6 +124,62 @@ TEST_P(LobePerArch, AnyCountAndOffsetWritesOnlyTheOutput) {
       lobe.eval(t.data() + offset, t.data() + offset, count, Variant::fast);  // in place
       for (std::size_t i = 0; i < count; ++i) ASSERT_EQ(t[offset + i], buffer[8 + i]);
     }
+}
+
+// Per-lane n: random lanes of (t, n) on the grid k in 1..5, Q in {0.1, 0.5, 0.9}, n log-uniform
+// in [k + 1, 10^4], t over each lane's lobe and a little past its cut-off.
+TEST_P(LobePerArch, PerLaneAgainstTheReference) {
+  const LobeBound bound = kLobeBounds[2];
+  std::mt19937 engine(17);
+  for (int k = 1; k <= 5; ++k)
+    for (double Q : {0.1, 0.5, 0.9}) {
+      const PerLaneLobe lobe(k, Q, k + 1, 10000);
+      std::uniform_real_distribution<double> log_n(std::log(k + 1.0), std::log(10000.0)), unit(0, 1);
+      std::vector<float> t(20000), n(20000), out(20000);
+      std::vector<ref::KutlogLobe> references;
+      for (std::size_t i = 0; i < t.size(); ++i) {
+        n[i] = float(std::exp(log_n(engine)));
+        references.emplace_back(n[i], k, Q);
+        t[i] = float(std::cos(unit(engine) * 1.2 * references.back().cutoff_angle()));
+      }
+      for (Normalization normalization : {Normalization::none, Normalization::exact_coef}) {
+        lobe.eval(t.data(), n.data(), out.data(), t.size(), normalization);
+        double worst = 0, worst_ulp = 0;
+        for (std::size_t i = 0; i < t.size(); ++i) {
+          const double scale =
+              normalization == Normalization::none ? 1.0 : references[i].coef_exact();
+          const double expected = references[i].eval(t[i]);
+          const double error = std::fabs(out[i] / scale - expected);
+          worst = std::max(worst, error);
+          if (expected >= 0.6) worst_ulp = std::max(worst_ulp, error / std::ldexp(1.0, std::ilogb(expected) - 23));
+        }
+        EXPECT_LE(worst, bound.max_abs_error) << "k=" << k << " Q=" << Q;
+        EXPECT_LE(worst_ulp, bound.max_epicenter_ulp) << "k=" << k << " Q=" << Q;
+      }
+    }
+}
+
+TEST_P(LobePerArch, PerLaneDataRuleAndClamping) {
+  const PerLaneLobe lobe(3, 0.5, 10, 1000);
+  const float t[] = {1.5f, 1.0f, -0.2f, kNaN, 0.999f, 0.999f, 0.999f};
+  const float n[] = {100, 100, 100, 100, kNaN, 1e6f, 2000};
+  float out[7];
+  lobe.eval(t, n, out, 7, Normalization::none);
+  EXPECT_EQ(out[0], 1.0f);
+  EXPECT_EQ(out[1], 1.0f);
+  EXPECT_EQ(out[2], 0.0f);
+  EXPECT_TRUE(std::isnan(out[3]));
+  EXPECT_TRUE(std::isnan(out[4]));
+  EXPECT_EQ(out[5], out[6]);  // both clamped to n_max
+  EXPECT_NEAR(out[6], ref::KutlogLobe(1000, 3, 0.5).eval(0.999f), 1e-6);
+}
+
+TEST(PerLaneLobe, Validation) {
+  EXPECT_THROW(PerLaneLobe(3, 0.5, 2, 100), std::invalid_argument);   // n_min < k
+  EXPECT_THROW(PerLaneLobe(3, 0.5, 100, 10), std::invalid_argument);  // n_max < n_min
+  EXPECT_THROW(PerLaneLobe(0, 0.5, 10, 100), std::invalid_argument);
+  EXPECT_THROW(PerLaneLobe(3, 1.5, 10, 100), std::invalid_argument);
+  EXPECT_THROW(PerLaneLobe(3, 0.5, 10, INFINITY), std::invalid_argument);
 }
 
 INSTANTIATE_TEST_SUITE_P(Arch, LobePerArch, testing::ValuesIn(supported_archs()), arch_test_name);

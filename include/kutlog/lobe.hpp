@@ -84,6 +84,42 @@ class Lobe {
   LobeKernel kernels_[2][2][2];  // variant, normalization, fused multiply-add
 };
 
+// What the per-lane kernel needs of one material, precomputed (kutlog/simd/lobe.hpp). With
+// y = 1/n: c^2 = n H(y - y_center), coef = n K(y - y_center); theta^2 = acos(t)^2 = w G(w),
+// w = 1 - t; v = c^2 theta^2 and F = (1 - v R(v - v_center))^k, 0 for v >= v_cut = (pi/2)^2.
+struct PerLaneKernel {
+  static constexpr int kMaxDegree = 20;
+  using Coefficients = std::array<float, kMaxDegree + 1>;
+  float n_min = 1, n_max = 1, y_center = 0, v_center = 0, v_cut = 0, t_guard = 0;
+  int k = 1, h_degree = 0, k_degree = 0, g_degree = 0, r_degree = 0;
+  Coefficients h{}, coef_k{}, g{}, r{};
+};
+
+// A lobe whose exponent n varies per lane (a glossiness map), k and Q per material: c and the
+// exact coef are computed per lane, in SIMD, from polynomials in 1/n fitted for the range
+// [n_min, n_max] at setup.
+//   Domain: k <= n_min <= n_max (std::invalid_argument otherwise, naming the parameter and
+//   its range); lanes' n outside [n_min, n_max] are clamped to it; NaN n or t gives NaN.
+//   Accuracy: |error| <= 2^-20 relative to the peak (1, or the lane's coef when normalized),
+//   measured on random (t, n) over the grid k in 1..5, Q in {0.1, 0.5, 0.9}, n in
+//   [k + 1, 10^4]; the epicenter's ULP error is reported by kutlog/accuracy.hpp.
+class PerLaneLobe {
+ public:
+  PerLaneLobe(int k, double Q, double n_min, double n_max);
+
+  int k() const { return k_; }
+  double Q() const { return Q_; }
+  // out[i] = F(t[i]; n[i]), or coef_exact(n[i]) * F(t[i]; n[i]).
+  void eval(const float* t, const float* n, float* out, std::size_t count,
+            Normalization normalization = Normalization::exact_coef) const;
+  const PerLaneKernel& kernel() const { return kernel_; }
+
+ private:
+  int k_;
+  double Q_;
+  PerLaneKernel kernel_;
+};
+
 // Baselines over arrays, same data rule, dispatched like the lobe. out[i] = scale * t[i]^n
 // with xsimd::pow (what users have today) or with pow_u10; Schlick's t / (n - n t + t).
 // For normalized Blinn-Phong pass scale = ref::blinn_phong_exact_coef(n) (kutlog/reference.hpp).

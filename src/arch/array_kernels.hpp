@@ -149,6 +149,11 @@ KernelTable make_kernel_table() {
                         count);
   };
   table.kutlog_lobe = &kutlog_lobe_array_any<Arch>;
+  table.kutlog_per_lane = [](const PerLaneKernel& kernel, bool normalized, const float* t,
+                             const float* n, float* out, std::size_t count) {
+    map_arrays<Arch, 2>(simd::PreparedPerLaneLobe<Arch>(kernel, normalized), {t, n}, out, count,
+                        1.0f);
+  };
   table.blinn_phong_xsimd = [](const float* t, float n, float scale, float* out, std::size_t count) {
     const F exponent(n), factor(scale);
     map_arrays<Arch, 1>([&](F v) { return simd::blinn_phong_xsimd(v, exponent, factor); }, {t},

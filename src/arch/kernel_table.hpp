@@ -20,12 +20,16 @@ using ShadeVectorsKernel = void (*)(const LobeKernel&, Reflection, Vectors, Vect
 using ShadeCosinesKernel = void (*)(const LobeKernel&, const float*, const float*, float*,
                                     std::size_t, const std::uint8_t*);
 
+using PerLaneArrayKernel = void (*)(const PerLaneKernel&, bool normalized, const float*,
+                                    const float*, float*, std::size_t);
+
 struct KernelTable {
   bool fused_fma;  // which of a Lobe's kernels this arch runs
   UnaryArrayKernel acos_u10, cos_u10, cos_halfpi_u10, exp_u10, log_u10;
   BinaryArrayKernel pow_u10;
   BinaryScalarArrayKernel pow_scalar_u10;
   LobeArrayKernel kutlog_lobe;
+  PerLaneArrayKernel kutlog_per_lane;
   PowerLobeArrayKernel blinn_phong_xsimd, blinn_phong_u10;
   BinaryScalarArrayKernel schlick;
   ShadeVectorsKernel shade_vectors;

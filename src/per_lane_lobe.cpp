@@ -1,0 +1,97 @@
+// Setup of a PerLaneLobe: four polynomials, each fitted (src/polynomial_fit.hpp) to the lowest
+// degree whose float evaluation meets its share of the 2^-20 bound on a dense grid.
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+#include "kutlog/lobe.hpp"
+#include "kutlog/reference.hpp"
+#include "polynomial_fit.hpp"
+
+namespace kutlog {
+namespace {
+
+using detail::Real;
+
+// The lowest degree at which g's fit on [lo, hi], evaluated in float by Horner's rule in
+// x - center, has relative error at most `target` on a grid (or the maximal degree).
+int fit_float(const std::function<Real(Real)>& g, double lo, double hi, double center,
+              double target, PerLaneKernel::Coefficients& out) {
+  for (int degree = 1; degree <= PerLaneKernel::kMaxDegree; ++degree) {
+    const std::vector<Real> q = detail::fit_monomials(g, lo, hi, center, degree);
+    for (int i = 0; i <= degree; ++i) out[i] = float(q[i]);
+    double worst = 0;
+    for (int j = 0; j <= 1024; ++j) {
+      const double x = lo + (hi - lo) * j / 1024;
+      const float s = float(x) - float(center);
+      float value = out[degree];
+      for (int i = degree; i-- > 0;) value = std::fma(value, s, out[i]);
+      const double exact = double(g(x));
+      worst = std::max(worst, std::fabs(value - exact) / std::fabs(exact));
+    }
+    if (worst <= target) return degree;
+  }
+  return PerLaneKernel::kMaxDegree;
+}
+
+}  // namespace
+
+PerLaneLobe::PerLaneLobe(int k, double Q, double n_min, double n_max) : k_(k), Q_(Q) {
+  ref::validate_parameters(n_min, k, Q);
+  ref::validate_parameters(n_max, k, Q);
+  if (!(n_min >= k))
+    throw std::invalid_argument("kutlog: n_min = " + std::to_string(n_min) +
+                                " is invalid; a per-lane lobe needs n_min >= k = " +
+                                std::to_string(k));
+  if (!(n_max >= n_min))
+    throw std::invalid_argument("kutlog: n_max = " + std::to_string(n_max) +
+                                " is invalid; n_max must be >= n_min = " + std::to_string(n_min));
+  PerLaneKernel& kernel = kernel_;
+  kernel.n_min = float(n_min);
+  kernel.n_max = float(n_max);
+  // Every lane's lobe fits inside the widest one, that of n_min: t at or below its cut-off is
+  // 0 for every lane, and G is fitted on its support.
+  const ref::KutlogLobe widest(n_min, k, Q);
+  kernel.t_guard = float(std::cos(widest.cutoff_angle()));
+  const double w_max = 1 - std::cos(widest.cutoff_angle());
+  const double y_lo = 1 / n_max, y_hi = 1 / n_min;
+  kernel.y_center = float(0.5 * (y_lo + y_hi));
+  const double theta_k = ref::acos_of_root(Q, k);
+  constexpr double kTarget = 0x1p-23;
+  // c^2 / n = theta_k^2 y / acos(Q^y)^2 and coef / n = y coef(1/y): analytic in y.
+  kernel.h_degree = fit_float(
+      [&](Real y) {
+        const double theta_n = ref::acos_of_root(Q, double(1 / y));
+        return Real(theta_k * theta_k) * y / Real(theta_n * theta_n);
+      },
+      y_lo, y_hi, kernel.y_center, kTarget, kernel.h);
+  kernel.k_degree = fit_float(
+      [&](Real y) { return y * Real(ref::coef_exact(double(1 / y), k, Q)); }, y_lo, y_hi,
+      kernel.y_center, kTarget, kernel.coef_k);
+  // theta^2 / w = (2 asin(sqrt(w/2)))^2 / w, analytic up to w = 2.
+  kernel.g_degree = fit_float(
+      [](Real w) {
+        if (w < 1e-30L) return Real(2);
+        const Real theta = 2 * std::asin(std::sqrt(w / 2));
+        return theta * theta / w;
+      },
+      0, std::max(w_max, 1e-6), 0, kTarget, kernel.g);
+  // The base B = cos(sqrt(v)) = 1 - v R(v) on [0, (pi/2)^2], F = B^k. R's relative error
+  // reaches B multiplied by v R = 1 - B <= 1, and F multiplied by k. (Fitting cos^k directly
+  // needs degree 20 and more in float for k >= 3: its expansions cancel at one end or the
+  // other.)
+  kernel.v_cut = float(ref::pi * ref::pi / 4);
+  kernel.v_center = kernel.v_cut / 2;
+  kernel.r_degree = fit_float(
+      [](Real v) {
+        if (v < 1e-30L) return Real(0.5);
+        const Real half_sine = std::sin(std::sqrt(v) / 2);
+        return 2 * half_sine * half_sine / v;
+      },
+      0, double(kernel.v_cut), kernel.v_center, kTarget, kernel.r);
+  kernel.k = k;
+}
+
+}  // namespace kutlog
