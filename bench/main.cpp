@@ -1,13 +1,18 @@
 // kutlog-bench: Google Benchmark over every arch this CPU supports, plus scalar std:: peers.
 //
 //   kutlog-bench [benchmark flags] [--kutlog_ratios]
+//   kutlog-bench --kutlog_ratios_from=FILE.json
 //
 // --kutlog_ratios prints, after the run, the throughput ratios of kutlog's kernels to their
-// peers, taken from this one run (medians when --benchmark_repetitions is given).
+// peers, taken from this one run (medians when --benchmark_repetitions is given);
+// --kutlog_ratios_from prints them from a run saved with --benchmark_out=FILE.json, and runs
+// nothing.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <string_view>
 #include <string>
 #include <vector>
 
@@ -52,9 +57,24 @@ int main(int argc, char** argv) {
   using namespace kutlog;
   bool print_ratios = false;
   std::vector<char*> args;
+  constexpr std::string_view kFromFlag = "--kutlog_ratios_from=";
   for (int i = 0; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--kutlog_ratios") == 0) print_ratios = true;
-    else args.push_back(argv[i]);
+    const std::string_view arg = argv[i];
+    if (arg == "--kutlog_ratios") {
+      print_ratios = true;
+    } else if (arg.substr(0, kFromFlag.size()) == kFromFlag) {
+      bench::RatioCollector saved;
+      try {
+        saved.load_json(std::string(arg.substr(kFromFlag.size())));
+      } catch (const std::exception& error) {
+        std::fprintf(stderr, "kutlog-bench: error: %s\n", error.what());
+        return 2;
+      }
+      saved.print_ratios(stdout);
+      return 0;
+    } else {
+      args.push_back(argv[i]);
+    }
   }
   int count = int(args.size());
   benchmark::Initialize(&count, args.data());

@@ -1,5 +1,9 @@
 #include "ratio_report.hpp"
 
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
 namespace kutlog::bench {
 
 void RatioCollector::ReportRuns(const std::vector<Run>& runs) {
@@ -14,9 +18,33 @@ void RatioCollector::ReportRuns(const std::vector<Run>& runs) {
   }
 }
 
+void RatioCollector::load_json(const std::string& path) {
+  std::ifstream file(path);
+  if (!file) throw std::runtime_error("cannot open " + path);
+  nlohmann::json run;
+  try {
+    run = nlohmann::json::parse(file);
+  } catch (const nlohmann::json::exception& error) {
+    throw std::runtime_error(path + ": " + error.what());
+  }
+  // Google Benchmark's format: "benchmarks": [{run_name, run_type, aggregate_name,
+  // items_per_second, repetitions}, ...]; the same choice as ReportRuns.
+  for (const nlohmann::json& entry : run.value("benchmarks", nlohmann::json::array())) {
+    if (!entry.contains("items_per_second") || entry.value("error_occurred", false)) continue;
+    const bool single = entry.value("run_type", "") == "iteration" && entry.value("repetitions", 1) <= 1;
+    const bool median = entry.value("run_type", "") == "aggregate" &&
+                        entry.value("aggregate_name", "") == "median";
+    if (single || median)
+      throughput_[entry.value("run_name", "")] = entry["items_per_second"].get<double>();
+  }
+}
+
 void RatioCollector::print_ratios(std::FILE* out) const {
-  print_math_ratios(out);
-  print_lobe_ratios(out);
+  const bool math = print_math_ratios(out), lobes = print_lobe_ratios(out);
+  if (!math && !lobes)
+    std::fputs("kutlog-bench: no ratios: the run has no kernel together with its peer "
+               "(math/<f>/kutlog_u10 with xsimd, or lobe/... with pow_xsimd at the same n)\n",
+               out);
 }
 
 double RatioCollector::rate(const std::string& name) const {
@@ -24,7 +52,7 @@ double RatioCollector::rate(const std::string& name) const {
   return found == throughput_.end() ? 0.0 : found->second;
 }
 
-void RatioCollector::print_lobe_ratios(std::FILE* out) const {
+bool RatioCollector::print_lobe_ratios(std::FILE* out) const {
   // Throughput of each lobe kernel over that of pow_xsimd at the same n and arch.
   bool header = false;
   for (const char* arch : {"avx512", "avx2", "sse4.1"})
@@ -51,9 +79,10 @@ void RatioCollector::print_lobe_ratios(std::FILE* out) const {
                      rate("lobe/schlick" + at_n + tail) / pow_xsimd);
       }
     }
+  return header;
 }
 
-void RatioCollector::print_math_ratios(std::FILE* out) const {
+bool RatioCollector::print_math_ratios(std::FILE* out) const {
   bool header = false;
   for (const char* function : {"acos", "cos", "exp", "log", "pow"})
     for (const char* arch : {"avx512", "avx2", "sse4.1"}) {
@@ -72,6 +101,7 @@ void RatioCollector::print_math_ratios(std::FILE* out) const {
                    ours / 1e6, xsimd / 1e6, xsimd ? ours / xsimd : 0.0, scalar / 1e6,
                    scalar ? ours / scalar : 0.0);
     }
+  return header;
 }
 
 }  // namespace kutlog::bench

@@ -22,14 +22,18 @@ class RatioCollector : public benchmark::BenchmarkReporter {
 
   // items/s by benchmark name: the median of the repetitions if there were several.
   const std::map<std::string, double>& throughput() const { return throughput_; }
+  // Reads the throughputs of a run saved with --benchmark_out=FILE (JSON) instead; throws
+  // std::runtime_error naming the file if it cannot be read or parsed.
+  void load_json(const std::string& path);
   // Prints the ratio tables (markdown) of the kernels measured in this run: math kernels
   // against xsimd and std, lobes against pow_xsimd at the same n and arch.
   void print_ratios(std::FILE* out) const;
 
  private:
   double rate(const std::string& name) const;  // 0 if not measured
-  void print_math_ratios(std::FILE* out) const;
-  void print_lobe_ratios(std::FILE* out) const;
+  // Each prints its table if the run has something for it, and says whether it did.
+  bool print_math_ratios(std::FILE* out) const;
+  bool print_lobe_ratios(std::FILE* out) const;
 
   std::unique_ptr<benchmark::BenchmarkReporter> display_;
   std::map<std::string, double> throughput_;

@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake
   libxsimd-dev libgtest-dev libbenchmark-dev libopenimageio-dev libmpfr-dev libcli11-dev
+  nlohmann-json3-dev
   fonts-dejavu-core
   clang-14 libclang-rt-14-dev
 )
