@@ -17,5 +17,10 @@ for table in 1 2 fig4; do
   "$tables" --table "$table" --format csv >"$out/table-$table.csv"
 done
 
+plot="$build_dir/tools/kutlog-plot"
+for figure in 2 3 9; do
+  "$plot" --figure "$figure" --output "$out/figure-$figure.png"
+done
+
 echo
 echo "kutlog: results written to $(cd "$out" && pwd)"
