@@ -21,6 +21,7 @@ plot="$build_dir/tools/kutlog-plot"
 for figure in 2 3 9; do
   "$plot" --figure "$figure" --output "$out/figure-$figure.png"
 done
+"$plot" --figure albedo --n 100 --k 5 --q 0.5 --output "$out/albedo.png"
 
 echo
 echo "kutlog: results written to $(cd "$out" && pwd)"

@@ -190,6 +190,58 @@ double blinn_phong_approx_coef(double n) {
   return (n + 8) / (8 * pi);
 }
 
+namespace {
+// integral over psi in [0, 2 pi) of (a + b cos psi) where a + b cos psi > threshold (b >= 0).
+double azimuthal_integral_above(double a, double b, double threshold) {
+  if (b <= 0) return a > threshold ? 2 * pi * a : 0;
+  const double cos_limit = (threshold - a) / b;
+  if (cos_limit <= -1) return 2 * pi * a;
+  if (cos_limit >= 1) return 0;
+  const double psi = std::acos(cos_limit);
+  return 2 * (a * psi + b * std::sin(psi));
+}
+}  // namespace
+
+double albedo_phong(const KutlogLobe& lobe, double coef, double theta_i) {
+  // wo at angle alpha from R (which is at theta_i from N) and azimuth psi around R:
+  // cos(theta_o) = cos(alpha) cos(theta_i) + sin(alpha) sin(theta_i) cos(psi).
+  const double limit = std::min(lobe.cutoff_angle(), pi / 2);
+  return coef * integrate(
+                    [&](double alpha) {
+                      return lobe.eval_angle(alpha) * std::sin(alpha) *
+                             azimuthal_integral_above(std::cos(alpha) * std::cos(theta_i),
+                                                      std::sin(alpha) * std::sin(theta_i), 0);
+                    },
+                    0, limit);
+}
+
+double albedo_blinn(const KutlogLobe& lobe, double coef, double theta_i) {
+  // h at angle theta_h from N and azimuth psi (by symmetry psi in [0, pi], doubled):
+  // wi.h = cos(theta_i) cos(theta_h) + sin(theta_i) sin(theta_h) cos(psi) = wo.h, and the
+  // reflected wo = 2 (wi.h) h - wi has N.wo = 2 (wi.h) cos(theta_h) - cos(theta_i).
+  const double limit = std::min(lobe.cutoff_angle(), pi / 2);
+  const double cos_i = std::cos(theta_i), sin_i = std::sin(theta_i);
+  const auto over_azimuth = [&](double theta_h) {
+    const double cos_h = std::cos(theta_h), sin_h = std::sin(theta_h);
+    return integrate(
+        [&](double psi) {
+          const double i_dot_h = cos_i * cos_h + sin_i * sin_h * std::cos(psi);
+          const double n_dot_o = 2 * i_dot_h * cos_h - cos_i;
+          if (i_dot_h <= 0 || n_dot_o <= 0) return 0.0;
+          const double shadowing = std::min(
+              {1.0, 2 * cos_h * n_dot_o / i_dot_h, 2 * cos_h * cos_i / i_dot_h});  // V-cavity
+          return shadowing * i_dot_h;
+        },
+        0, pi, 1e-10);
+  };
+  return 2 * coef / cos_i *
+         integrate(
+             [&](double theta_h) {
+               return lobe.eval_angle(theta_h) * std::sin(theta_h) * over_azimuth(theta_h);
+             },
+             0, limit, 1e-10);
+}
+
 double max_relative_error_in_epicenter(const std::function<double(double)>& lobe_of_angle,
                                        double n, double zone_floor) {
   validate_exponent(n);

@@ -5,6 +5,7 @@
 //   --figure 9     Delta, the energy error of the fitted and of the exact coef, n in [6, 1000]
 //                  (k = 5, Q = 0.5)
 //   --figure lobe  the lobes of any --n, --k, --q
+//   --figure albedo  white furnace: directional albedo, exact and fitted coef
 #include <cmath>
 #include <string>
 #include <vector>
@@ -93,6 +94,34 @@ void draw_energy_errors(int k, double Q, const std::string& path) {
   plot.save(path);
 }
 
+// White furnace: the directional albedo against the incidence angle, exact and fitted coef,
+// in the Phong and the Blinn (microfacet, V-cavity) use.
+void draw_albedo(double n, int k, double Q, const std::string& path) {
+  const ref::KutlogLobe lobe(n, k, Q);
+  std::vector<double> degrees, phong_exact, phong_fit, blinn_exact, blinn_fit;
+  for (int i = 0; i <= 89; ++i) {
+    const double theta_i = i * ref::pi / 180;
+    degrees.push_back(i);
+    phong_exact.push_back(ref::albedo_phong(lobe, lobe.coef_exact(), theta_i));
+    phong_fit.push_back(ref::albedo_phong(lobe, lobe.coef_fit(), theta_i));
+    blinn_exact.push_back(ref::albedo_blinn(lobe, lobe.coef_exact(), theta_i));
+    blinn_fit.push_back(ref::albedo_blinn(lobe, lobe.coef_fit(), theta_i));
+  }
+  Plot plot;
+  // Zoomed on 1, where the fitted coef's excess shows; the Phong use, ~cos(theta_i), leaves the
+  // frame below 0.9.
+  plot.title("White furnace: directional albedo near 1 (" + parameters(n, k, Q) + ")")
+      .x_label("incidence angle (degrees)")
+      .y_label("albedo")
+      .y_range(0.9, 1.02)
+      .line("Blinn use, exact coef", degrees, blinn_exact)
+      .line("Blinn use, the article's fitted coef", degrees, blinn_fit)
+      .line("Phong use, exact coef", degrees, phong_exact)
+      .line("Phong use, the article's fitted coef", degrees, phong_fit)
+      .hline(1, "energy conservation: at most 1");
+  plot.save(path);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -101,14 +130,16 @@ int main(int argc, char** argv) {
       "  --figure 2     F_kutlog, Blinn-Phong and Schlick against the angle (n=50, k=5, Q=0.5)\n"
       "  --figure 3     delta of F_kutlog and Schlick in the epicenter zone, n in [6, 1000]\n"
       "  --figure 9     energy error of the fitted and of the exact coef, n in [6, 1000]\n"
-      "  --figure lobe  the lobes of --n, --k, --q",
+      "  --figure lobe  the lobes of --n, --k, --q\n"
+      "  --figure albedo  white furnace: directional albedo against the incidence angle, in\n"
+      "                 the Phong use and the Blinn (Cook-Torrance, V-cavity) use, for --n --k --q",
       "kutlog-plot");
   std::string figure, output;
   double n = 50, Q = 0.5;
   int k = 5;
-  app.add_option("--figure", figure, "2, 3, 9 or lobe")
+  app.add_option("--figure", figure, "2, 3, 9, lobe or albedo")
       ->required()
-      ->check(CLI::IsMember({"2", "3", "9", "lobe"}));
+      ->check(CLI::IsMember({"2", "3", "9", "lobe", "albedo"}));
   app.add_option("--output,-o", output, "The PNG to write")->required();
   app.add_option("--n", n, "lobe: the exponent n (real > 0)")->capture_default_str();
   app.add_option("--k", k, "lobe: the power k (integer >= 1)")->capture_default_str();
@@ -117,10 +148,9 @@ int main(int argc, char** argv) {
     if (figure == "2") draw_lobes(50, 5, 0.5, "Figure 2: the lobes", output);
     if (figure == "3") draw_epicenter_errors(5, 0.5, output);
     if (figure == "9") draw_energy_errors(5, 0.5, output);
-    if (figure == "lobe") {
-      ref::validate_parameters(n, k, Q);
-      draw_lobes(n, k, Q, "The lobes", output);
-    }
+    if (figure == "lobe" || figure == "albedo") ref::validate_parameters(n, k, Q);
+    if (figure == "lobe") draw_lobes(n, k, Q, "The lobes", output);
+    if (figure == "albedo") draw_albedo(n, k, Q, output);
     std::fprintf(stderr, "kutlog-plot: wrote %s\n", output.c_str());
     return 0;
   });

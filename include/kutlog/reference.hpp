@@ -143,6 +143,22 @@ double blinn_phong_exact_coef(double n);
 // The common approximation of the same: (n + 8) / (8 pi).
 double blinn_phong_approx_coef(double n);
 
+// ---- White furnace: directional albedo of a normalized lobe ------------------------------
+// The fraction of light arriving at incidence theta_i (radians, [0, pi/2)) that the lobe
+// scaled by `coef` reflects into the upper hemisphere: 1 at most for an energy-conserving
+// lobe. Each is one adaptive quadrature over the lobe's angle, the azimuth integrated in
+// closed form.
+// Phong use: f(wi, wo) = coef F(R.wo), R the mirror direction of wi;
+//   A = integral over the upper hemisphere of f cos(theta_o) d(wo). A(0) = coef 2 pi Int.
+double albedo_phong(const KutlogLobe& lobe, double coef, double theta_i);
+// Blinn use: coef F(N.H) is a distribution of half vectors D(h) (coef normalizes the integral
+// of D(h) cos(theta_h) d(h) to 1), in the Cook-Torrance BRDF f = D G / (4 cos(theta_i)
+// cos(theta_o)) with the V-cavity shadowing-masking G and no Fresnel term:
+// A = (1 / cos(theta_i)) integral of D(h) G (wi.h) d(h) over the half vectors that reflect wi
+// into the upper hemisphere. Without G the 1 / cos(theta_i) makes A grow without bound at
+// grazing incidence whatever the lobe.
+double albedo_blinn(const KutlogLobe& lobe, double coef, double theta_i);
+
 // ---- Measures used by the article's tables --------------------------------------------------
 
 // delta: the maximal relative error |F(x) / F_B(x) - 1| of a lobe F over the epicenter zone of
