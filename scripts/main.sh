@@ -22,6 +22,7 @@ for figure in 2 3 9; do
   "$plot" --figure "$figure" --output "$out/figure-$figure.png"
 done
 "$plot" --figure albedo --n 100 --k 5 --q 0.5 --output "$out/albedo.png"
+"$build_dir/tools/kutlog-render" --n 100 --k 3 --output "$out/spheres"
 
 echo
 echo "kutlog: results written to $(cd "$out" && pwd)"

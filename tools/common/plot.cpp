@@ -586,10 +586,15 @@ class Plot::Renderer {
 };
 
 void Plot::save(const std::string& path) const {
-  if (!std::filesystem::exists(kFontPath))
-    throw std::runtime_error(std::string("plot: font ") + kFontPath +
-                             " is missing (Debian package fonts-dejavu-core)");
+  label_font();  // throws if the font is missing
   Renderer(*this).draw(path);
+}
+
+const char* label_font() {
+  if (!std::filesystem::exists(kFontPath))
+    throw std::runtime_error(std::string("font ") + kFontPath +
+                             " is missing (Debian package fonts-dejavu-core)");
+  return kFontPath;
 }
 
 }  // namespace kutlog::tools

@@ -11,6 +11,10 @@
 
 namespace kutlog::tools {
 
+// The DejaVu Sans file the tools label images with (Debian package fonts-dejavu-core);
+// std::runtime_error naming the file and the package if it is missing.
+const char* label_font();
+
 // A color with components in [0, 1].
 struct Rgb {
   float r, g, b;
