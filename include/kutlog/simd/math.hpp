@@ -308,7 +308,6 @@ inline constexpr std::array<double, 4> kPowLog2 = [] {
 // lanes and rounded once to float.
 template <bool kSubnormals, class Arch>
 inline floats<Arch> pow_positive(floats<Arch> x, floats<Arch> y) {
-  using F = floats<Arch>;
   using D = doubles<Arch>;
   namespace c = constants;
   const Decomposed<Arch> d = decompose<kSubnormals>(x);
