@@ -1,5 +1,10 @@
-// A lobe's parameters, for parameterized tests.
+// A lobe's parameters, for parameterized tests, and the test names they give.
 #pragma once
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
 
 namespace kutlog {
 
@@ -8,5 +13,15 @@ struct LobeCase {
   int k;
   double Q;
 };
+
+// "n100_k3_Q0_5": gtest allows no dots in names.
+inline std::string lobe_case_name(const testing::TestParamInfo<LobeCase>& info) {
+  char name[64];
+  std::snprintf(name, sizeof name, "n%g_k%d_Q%g", info.param.n, info.param.k, info.param.Q);
+  std::string result = name;
+  for (char& c : result)
+    if (c == '.') c = '_';
+  return result;
+}
 
 }  // namespace kutlog

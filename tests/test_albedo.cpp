@@ -39,16 +39,7 @@ std::vector<LobeCase> furnace_grid() {
       for (double n : {k + 1.0, 10.0, 100.0, 1000.0}) grid.push_back({n, k, Q});
   return grid;
 }
-INSTANTIATE_TEST_SUITE_P(Grid, WhiteFurnace, testing::ValuesIn(furnace_grid()),
-                         [](const auto& info) {
-                           char name[64];
-                           std::snprintf(name, sizeof name, "n%g_k%d_Q%g", info.param.n,
-                                         info.param.k, info.param.Q);
-                           std::string result = name;
-                           for (char& c : result)
-                             if (c == '.') c = '_';
-                           return result;
-                         });
+INSTANTIATE_TEST_SUITE_P(Grid, WhiteFurnace, testing::ValuesIn(furnace_grid()), lobe_case_name);
 
 TEST(WhiteFurnace, ArticlesFittedCoefExceedsOneSomewhere) {
   const KutlogLobe lobe(100, 5, 0.5);

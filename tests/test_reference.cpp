@@ -113,16 +113,7 @@ TEST_P(LobeProperties, CutoffBehindAnchorAndInsideHemisphereIffNAboveK) {
   if (p.n < p.k) EXPECT_LT(lobe.c(), 1);
 }
 
-INSTANTIATE_TEST_SUITE_P(Grid, LobeProperties, testing::ValuesIn(property_cases()),
-                         [](const auto& info) {
-                           char name[64];
-                           std::snprintf(name, sizeof name, "n%g_k%d_Q%g", info.param.n,
-                                         info.param.k, info.param.Q);
-                           std::string result = name;
-                           for (char& ch : result)
-                             if (ch == '.') ch = '_';
-                           return result;
-                         });
+INSTANTIATE_TEST_SUITE_P(Grid, LobeProperties, testing::ValuesIn(property_cases()), lobe_case_name);
 
 TEST(Lobe, NEqualsKIsThePlainCosinePowerWithLafortuneWillemsCoef) {
   for (int k = 1; k <= 8; ++k)

@@ -87,15 +87,6 @@ inline Pair<Batch> fast_two_diff(Batch a, Batch b) {
   return {difference, (a - difference) - b};
 }
 
-// a + b = hi + lo exactly, for any a, b (Knuth's TwoSum).
-template <class Batch>
-inline Pair<Batch> two_sum(Batch a, Batch b) {
-  const Batch sum = a + b;
-  const Batch b_part = sum - a;
-  const Batch a_part = sum - b_part;
-  return {sum, (a - a_part) + (b - b_part)};
-}
-
 // a * b = hi + lo exactly (barring underflow): a fused multiply-add gives the rounding error
 // directly; without one, Dekker's product on Veltkamp halves of a and b.
 template <class T, class Arch>
@@ -124,12 +115,6 @@ inline Batch horner(Batch x, const std::array<T, N>& coefficients) {
   Batch result(coefficients[N - 1]);
   for (std::size_t i = N - 1; i-- > 0;) result = mul_add(result, x, Batch(coefficients[i]));
   return result;
-}
-
-// 2^k for integer lanes k in [-126, 127], built from the exponent bits.
-template <class Arch>
-inline floats<Arch> exp2_of_int(ints<Arch> k) {
-  return xsimd::bitwise_cast<floats<Arch>>((k + ints<Arch>(127)) << 23);
 }
 
 // float lanes -> two double batches (low half, high half), and back (one rounding each).
