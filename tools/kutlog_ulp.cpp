@@ -143,7 +143,7 @@ int main(int argc, char** argv) {
   app.add_option("--function", functions, "Functions, comma-separated")
       ->delimiter(',')
       ->capture_default_str();
-  app.add_option("--arch", arch_names, "Archs, comma-separated (avx512, avx2, sse4.1), or all")
+  app.add_option("--arch", arch_names, "Archs, comma-separated (avx512, avx2, sse4.1), all, or active (the dispatched one)")
       ->delimiter(',')
       ->capture_default_str();
   app.add_option("--format", format_name, "Output format: text, csv or markdown")
@@ -179,6 +179,10 @@ int main(int argc, char** argv) {
       if (name == "all") {
         archs = kutlog::supported_archs();
         break;
+      }
+      if (name == "active") {  // what the array functions run on here
+        archs.push_back(kutlog::active_arch());
+        continue;
       }
       archs.push_back(kutlog::parse_arch(name));
     }
