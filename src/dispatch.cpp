@@ -13,6 +13,7 @@
 #include "arch/kernel_table.hpp"
 #include "kutlog/lobe.hpp"
 #include "kutlog/math.hpp"
+#include "kutlog/reference.hpp"
 #include "kutlog/shade.hpp"
 
 namespace kutlog {
@@ -49,8 +50,33 @@ CpuFeatures detect_cpu_features() {
   return features;
 }
 
+// KUTLOG_CPU_HIDE=avx512[,avx2...] makes kutlog treat this CPU as lacking those archs (and,
+// for avx2, avx512 with it), so that the fallbacks and the unsupported-arch errors can be
+// tested on a machine that has everything (glibc's hwcaps tunables do the same for glibc).
+CpuFeatures hide_archs_named_in_environment(CpuFeatures features) {
+  const char* hidden = std::getenv("KUTLOG_CPU_HIDE");
+  if (!hidden) return features;
+  std::string_view names = hidden;
+  while (!names.empty()) {
+    const std::size_t comma = names.find(',');
+    Arch arch;
+    try {
+      arch = parse_arch(names.substr(0, comma));
+    } catch (const std::invalid_argument& error) {
+      throw std::runtime_error(std::string("kutlog: KUTLOG_CPU_HIDE: ") + error.what());
+    }
+    switch (arch) {  // hiding an arch hides those that build on it
+      case Arch::sse4_1: features.sse4_1 = false; [[fallthrough]];
+      case Arch::avx2: features.avx2_fma = false; [[fallthrough]];
+      case Arch::avx512: features.avx512 = false;
+    }
+    names = comma == std::string_view::npos ? std::string_view() : names.substr(comma + 1);
+  }
+  return features;
+}
+
 const CpuFeatures& cpu_features() {
-  static const CpuFeatures features = detect_cpu_features();
+  static const CpuFeatures features = hide_archs_named_in_environment(detect_cpu_features());
   return features;
 }
 
@@ -190,12 +216,15 @@ void PerLaneLobe::eval(const float* t, const float* n, float* out, std::size_t c
                                  count);
 }
 void blinn_phong_xsimd(const float* t, float* out, std::size_t count, float n, float scale) {
+  ref::validate_exponent(n);
   active_table().blinn_phong_xsimd(t, n, scale, out, count);
 }
 void blinn_phong_u10(const float* t, float* out, std::size_t count, float n, float scale) {
+  ref::validate_exponent(n);
   active_table().blinn_phong_u10(t, n, scale, out, count);
 }
 void schlick(const float* t, float* out, std::size_t count, float n) {
+  ref::validate_exponent(n);
   active_table().schlick(t, n, out, count);
 }
 

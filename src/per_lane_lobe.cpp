@@ -39,8 +39,9 @@ int fit_float(const std::function<Real(Real)>& g, double lo, double hi, double c
 }  // namespace
 
 PerLaneLobe::PerLaneLobe(int k, double Q, double n_min, double n_max) : k_(k), Q_(Q) {
-  ref::validate_parameters(n_min, k, Q);
-  ref::validate_parameters(n_max, k, Q);
+  ref::validate_exponent(n_min, "n_min");
+  ref::validate_exponent(n_max, "n_max");
+  ref::validate_parameters(n_min, k, Q);  // k and Q
   if (!(n_min >= k))
     throw std::invalid_argument("kutlog: n_min = " + std::to_string(n_min) +
                                 " is invalid; a per-lane lobe needs n_min >= k = " +

@@ -17,10 +17,6 @@ namespace {
                               name + " must be " + range);
 }
 
-void validate_exponent(double n) {
-  if (!std::isfinite(n) || !(n > 0)) throw_invalid("n", n, "finite and > 0");
-}
-
 double power_of_integer(double base, int exponent) {
   double result = 1.0;
   for (; exponent > 0; exponent >>= 1, base *= base)
@@ -56,6 +52,10 @@ double sine_integral_to(double b, double G) {
 }
 
 }  // namespace
+
+void validate_exponent(double n, const char* name) {
+  if (!std::isfinite(n) || !(n > 0)) throw_invalid(name, n, "finite and > 0");
+}
 
 void validate_parameters(double n, int k, double Q) {
   validate_exponent(n);

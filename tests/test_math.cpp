@@ -205,37 +205,6 @@ TEST_P(MathPerArch, ForcedArchIsActive) { EXPECT_EQ(active_arch(), GetParam()); 
 INSTANTIATE_TEST_SUITE_P(Arch, MathPerArch, testing::ValuesIn(supported_archs()),
                          arch_test_name);
 
-// Run by ctest once per KUTLOG_ARCH value (tests/CMakeLists.txt): the environment variable
-// selects the arch of the automatic choice.
-TEST(Dispatch, KutlogArchEnvironmentVariableSelectsTheArch) {
-  const char* forced = std::getenv("KUTLOG_ARCH");
-  if (!forced) GTEST_SKIP() << "KUTLOG_ARCH not set";
-  reset_arch();
-  EXPECT_EQ(active_arch(), parse_arch(forced));
-}
-
-TEST(Dispatch, NamesRoundTripAndUnknownNamesAreRejected) {
-  for (Arch arch : kCompiledArchs) EXPECT_EQ(parse_arch(arch_name(arch)), arch);
-  EXPECT_THROW(parse_arch("avx1024"), std::invalid_argument);
-  EXPECT_THROW(force_arch("neon"), std::invalid_argument);
-  EXPECT_FALSE(supported_archs().empty());
-  EXPECT_TRUE(arch_supported(Arch::sse4_1));
-}
-
-TEST(Dispatch, ForcingAnUnsupportedArchIsAClearError) {
-  for (Arch arch : kCompiledArchs) {
-    if (arch_supported(arch)) continue;
-    try {
-      force_arch(arch);
-      ADD_FAILURE() << "forced an unsupported arch";
-    } catch (const std::runtime_error& error) {
-      EXPECT_NE(std::string(error.what()).find("not supported"), std::string::npos);
-    }
-  }
-  if (supported_archs().size() == std::size(kCompiledArchs))
-    GTEST_SKIP() << "this CPU supports every compiled arch";
-}
-
 TEST(AccuracyTable, MeasuredBoundsKeepThePromiseOfTheirNames) {
   for (const AccuracyBound& bound : kAccuracyBounds) {
     EXPECT_LE(bound.max_ulp, bound.promised_ulp) << bound.kernel;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "expect_invalid.hpp"
 #include "kutlog/reference.hpp"
 #include "lobe_case.hpp"
 
@@ -244,17 +245,6 @@ TEST(Cosines, BlinnAndPhongFromVectors) {
 }
 
 // ---- Validation: each invalid parameter throws std::invalid_argument naming it and its range.
-void expect_invalid(const std::function<void()>& call, const std::string& name,
-                    const std::string& range) {
-  try {
-    call();
-    ADD_FAILURE() << "no exception for " << name;
-  } catch (const std::invalid_argument& error) {
-    const std::string message = error.what();
-    EXPECT_NE(message.find(name + " = "), std::string::npos) << message;
-    EXPECT_NE(message.find(range), std::string::npos) << message;
-  }
-}
 
 TEST(Validation, InvalidExponentN) {
   for (double n : {0.0, -1.0, kNaN, kInf, -kInf}) {

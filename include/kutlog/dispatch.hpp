@@ -4,6 +4,10 @@
 // arch's flags) and picks one at run time: the best one the CPU supports and the operating
 // system has enabled (CPUID and XGETBV), unless the environment variable KUTLOG_ARCH or
 // force_arch() names one. Choosing is thread-safe; the choice is read once per call.
+//
+// For tests, KUTLOG_CPU_HIDE=avx512[,avx2,...] makes kutlog treat the CPU as lacking those
+// archs (and those that build on them); a name it does not know makes the first query throw
+// std::runtime_error saying so.
 #pragma once
 
 #include <string_view>

@@ -123,6 +123,8 @@ class PerLaneLobe {
 // Baselines over arrays, same data rule, dispatched like the lobe. out[i] = scale * t[i]^n
 // with xsimd::pow (what users have today) or with pow_u10; Schlick's t / (n - n t + t).
 // For normalized Blinn-Phong pass scale = ref::blinn_phong_exact_coef(n) (kutlog/reference.hpp).
+// n is checked once per call, before anything is written: not finite or <= 0 throws
+// std::invalid_argument naming it, as ref::blinn_phong does; scale multiplies as IEEE does.
 void blinn_phong_xsimd(const float* t, float* out, std::size_t count, float n, float scale = 1);
 void blinn_phong_u10(const float* t, float* out, std::size_t count, float n, float scale = 1);
 void schlick(const float* t, float* out, std::size_t count, float n);

@@ -36,6 +36,8 @@ inline constexpr int kMaxK = 64;
 
 // Throws std::invalid_argument if n, k or Q is outside the domains above.
 void validate_parameters(double n, int k, double Q);
+// The exponent alone, named as the caller's parameter is (n, n_min, n_max).
+void validate_exponent(double n, const char* name = "n");
 
 // ---- Lobes from the cosine t = cos x ------------------------------------------------------
 // Rule for data (shared by every lobe here and by the SIMD kernels): t is clamped to [-1, 1]

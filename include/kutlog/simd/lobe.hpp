@@ -142,28 +142,35 @@ inline floats<Arch> kutlog_lobe(floats<Arch> t, const LobeKernel& kernel) {
   return PreparedLobe<Arch>(kernel)(t);
 }
 
+namespace detail {
+// t clamped to [0, 1], NaN kept: x86's max and min return their second operand when either
+// is NaN, so t goes second.
+template <class Arch>
+inline floats<Arch> clamp_to_unit_keeping_nan(floats<Arch> t) {
+  using F = floats<Arch>;
+  return xsimd::min(F(1.0f), xsimd::max(F(0.0f), t));
+}
+}  // namespace detail
+
 // scale * t^n with xsimd::pow: the pow-based Blinn-Phong users have today.
 template <class Arch>
 inline floats<Arch> blinn_phong_xsimd(floats<Arch> t, floats<Arch> n,
                                       floats<Arch> scale = floats<Arch>(1.0f)) {
-  using F = floats<Arch>;
-  return scale * xsimd::pow(xsimd::min(xsimd::max(t, F(0.0f)), F(1.0f)), n);
+  return scale * xsimd::pow(detail::clamp_to_unit_keeping_nan(t), n);
 }
 
 // scale * t^n with pow_u10.
 template <class Arch>
 inline floats<Arch> blinn_phong_u10(floats<Arch> t, floats<Arch> n,
                                     floats<Arch> scale = floats<Arch>(1.0f)) {
-  using F = floats<Arch>;
-  // max(0, .) and min(1, .) in this order keep NaN.
-  return scale * pow_u10(xsimd::min(F(1.0f), xsimd::max(F(0.0f), t)), n);
+  return scale * pow_u10(detail::clamp_to_unit_keeping_nan(t), n);
 }
 
 // Schlick's t / (n - n t + t), t clamped to [0, 1].
 template <class Arch>
 inline floats<Arch> schlick(floats<Arch> t, floats<Arch> n) {
   using F = floats<Arch>;
-  const F clamped = xsimd::min(F(1.0f), xsimd::max(F(0.0f), t));
+  const F clamped = detail::clamp_to_unit_keeping_nan(t);
   return clamped / mul_add(n, F(1.0f) - clamped, clamped);
 }
 

@@ -1,0 +1,159 @@
+// Bad input, case by case (the list docs/bad-input.md gives). Parameters are checked at setup
+// (or once per call, before anything is written) and throw std::invalid_argument naming the
+// parameter and its range; data never throws: each kernel follows its header's data rule on
+// every arch. The lobe's and the math kernels' data rules on special values are tested beside
+// their accuracy (test_lobe.cpp, test_math.cpp); here are the rest.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "expect_invalid.hpp"
+#include "kutlog/dispatch.hpp"
+#include "kutlog/lobe.hpp"
+#include "kutlog/math.hpp"
+#include "kutlog/reference.hpp"
+#include "kutlog/shade.hpp"
+#include "test_archs.hpp"
+
+namespace kutlog {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr float kNaNf = std::numeric_limits<float>::quiet_NaN();
+constexpr float kInff = std::numeric_limits<float>::infinity();
+
+// ---- Parameters ---------------------------------------------------------------------------
+
+TEST(BadParameters, LobeNamesEachInvalidParameterAndItsRange) {
+  for (double n : {0.0, -1.0, kNaN, kInf, -kInf})
+    expect_invalid([n] { Lobe(n, 2, 0.5); }, "n", "finite and > 0");
+  for (int k : {0, -3, ref::kMaxK + 1})
+    expect_invalid([k] { Lobe(10, k, 0.5); }, "k", "integer in [1, 64]");
+  for (double Q : {0.0, 1.0, -0.5, 1.5, kNaN, kInf})
+    expect_invalid([Q] { Lobe(10, 2, Q); }, "Q", "in (0, 1)");
+}
+
+TEST(BadParameters, PerLaneLobeNamesEachInvalidParameterAndItsRange) {
+  for (double n : {0.0, -1.0, kNaN, kInf}) {
+    expect_invalid([n] { PerLaneLobe(3, 0.5, n, 100); }, "n_min", "finite and > 0");
+    expect_invalid([n] { PerLaneLobe(3, 0.5, 10, n); }, "n_max", "finite and > 0");
+  }
+  expect_invalid([] { PerLaneLobe(3, 0.5, 2, 100); }, "n_min", ">= k");
+  expect_invalid([] { PerLaneLobe(3, 0.5, 100, 10); }, "n_max", ">= n_min");
+  expect_invalid([] { PerLaneLobe(0, 0.5, 10, 100); }, "k", "integer in [1, 64]");
+  expect_invalid([] { PerLaneLobe(3, 1.5, 10, 100); }, "Q", "in (0, 1)");
+}
+
+// The baselines take n per call: checked before anything is written.
+TEST(BadParameters, BaselinesRejectAnInvalidExponentAndWriteNothing) {
+  const float t[4] = {0.5f, 0.9f, 1.0f, 0.1f};
+  for (float n : {0.0f, -2.0f, kNaNf, kInff}) {
+    float out[4] = {-7, -7, -7, -7};
+    expect_invalid([&] { blinn_phong_xsimd(t, out, 4, n); }, "n", "finite and > 0");
+    expect_invalid([&] { blinn_phong_u10(t, out, 4, n); }, "n", "finite and > 0");
+    expect_invalid([&] { schlick(t, out, 4, n); }, "n", "finite and > 0");
+    for (float o : out) EXPECT_EQ(o, -7.0f);
+  }
+}
+
+TEST(BadParameters, UnknownArchNamesAreRejected) {
+  EXPECT_THROW(parse_arch("avx1024"), std::invalid_argument);
+  EXPECT_THROW(force_arch("neon"), std::invalid_argument);
+}
+
+// ---- Data, on every arch ------------------------------------------------------------------
+
+class BadData : public testing::TestWithParam<Arch> {
+ protected:
+  ScopedArch forced{GetParam()};
+};
+
+// count = 0 touches nothing: null pointers are fine.
+TEST_P(BadData, EmptyArraysMayBeNull) {
+  const Lobe lobe(100, 3, 0.5);
+  const PerLaneLobe per_lane(3, 0.5, 10, 1000);
+  math::acos_u10(nullptr, nullptr, 0);
+  math::cos_u10(nullptr, nullptr, 0);
+  math::cos_halfpi_u10(nullptr, nullptr, 0);
+  math::exp_u10(nullptr, nullptr, 0);
+  math::log_u10(nullptr, nullptr, 0);
+  math::pow_u10(nullptr, nullptr, nullptr, 0);
+  math::pow_u10(nullptr, 2.0f, nullptr, 0);
+  lobe.eval(nullptr, nullptr, 0);
+  per_lane.eval(nullptr, nullptr, nullptr, 0);
+  blinn_phong_xsimd(nullptr, nullptr, 0, 100);
+  blinn_phong_u10(nullptr, nullptr, 0, 100);
+  schlick(nullptr, nullptr, 0, 100);
+  shade(lobe, nullptr, nullptr, nullptr, 0);
+  const Vectors none{nullptr, nullptr, nullptr};
+  shade(lobe, none, none, none, nullptr, 0);
+}
+
+// A NaN or infinite component of N, L or V gives NaN; N.L < 0 gives 0 (light from behind);
+// slightly long vectors (t > 1) give the peak, like the lobe's data rule.
+TEST_P(BadData, ShadeVectorsFollowTheDataRule) {
+  const Lobe lobe(20, 1, 0.5);
+  const float coef = float(lobe.coef_exact());
+  const std::vector<float> nx{kNaNf, 0, 0, kInff, 0, 0, 0}, ny{0, 0, 0, 0, 0, 0, 0},
+      nz{1, 1, 1, 1, -1, 1.0001f, 1};
+  const std::vector<float> lx{0, kNaNf, 0, 0, 0, 0, 0}, ly{0, 0, 0, 0, 0, 0, -kInff},
+      lz{1, 1, 1, 1, 1, 1, 1};
+  const std::vector<float> vx{0, 0, 0, 0, 0, 0, 0}, vy{0, 0, kNaNf, 0, 0, 0, 0},
+      vz{1, 1, 1, 1, 1, 1, 1};
+  for (Reflection reflection : {Reflection::blinn, Reflection::phong}) {
+    std::vector<float> out(nx.size());
+    ShadeOptions options;
+    options.reflection = reflection;
+    shade(lobe, {nx.data(), ny.data(), nz.data()}, {lx.data(), ly.data(), lz.data()},
+          {vx.data(), vy.data(), vz.data()}, out.data(), out.size(), nullptr, options);
+    for (int i : {0, 1, 2, 3, 6}) EXPECT_TRUE(std::isnan(out[i])) << "lane " << i << ": " << out[i];
+    EXPECT_EQ(out[4], 0.0f);                    // the normal faces away from the light
+    EXPECT_NEAR(out[5], coef * 1.0001f, 1e-3f);  // t > 1: the peak, times N.L
+  }
+}
+
+// The cosine form: t under the lobe's data rule, n_dot_l as given (IEEE product).
+TEST_P(BadData, ShadeCosinesFollowTheDataRule) {
+  const Lobe lobe(20, 1, 0.5);
+  const float coef = float(lobe.coef_exact());
+  const float t[] = {kNaNf, 0.9f, 0.9f, kInff, -kInff, 1.5f, 0.99f};  // F(0.99) > 0
+  const float n_dot_l[] = {0.5f, kNaNf, -0.5f, 0.5f, 0.5f, 1.0f, kInff};
+  float out[7];
+  shade(lobe, t, n_dot_l, out, 7);
+  EXPECT_TRUE(std::isnan(out[0]));
+  EXPECT_TRUE(std::isnan(out[1]));
+  EXPECT_EQ(out[2], 0.0f);
+  EXPECT_FLOAT_EQ(out[3], 0.5f * coef);  // t = +inf > 1: the peak
+  EXPECT_EQ(out[4], 0.0f);
+  EXPECT_FLOAT_EQ(out[5], coef);
+  EXPECT_EQ(out[6], kInff);
+}
+
+// Baselines: the reference's data rule (t > 1 gives 1, t <= 0 gives 0, NaN gives NaN) on
+// every special value, with any scale.
+TEST_P(BadData, BaselinesFollowTheDataRule) {
+  const std::vector<float> t{kNaNf, kInff, -kInff, 1.0f + 1e-6f, 0.0f, -0.0f, -0.5f,
+                             std::numeric_limits<float>::denorm_min()};
+  std::vector<float> pow_xsimd(t.size()), pow_u10(t.size()), schlick_out(t.size());
+  blinn_phong_xsimd(t.data(), pow_xsimd.data(), t.size(), 100, 2.0f);
+  blinn_phong_u10(t.data(), pow_u10.data(), t.size(), 100, 2.0f);
+  schlick(t.data(), schlick_out.data(), t.size(), 100);
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const double expected_pow = ref::blinn_phong(t[i], 100);
+    const double expected_schlick = ref::schlick(t[i], 100);
+    for (float got : {pow_xsimd[i], pow_u10[i]}) {
+      if (std::isnan(expected_pow)) EXPECT_TRUE(std::isnan(got)) << "t = " << t[i];
+      else EXPECT_NEAR(got, 2 * expected_pow, 1e-6) << "t = " << t[i];
+    }
+    if (std::isnan(expected_schlick)) EXPECT_TRUE(std::isnan(schlick_out[i])) << "t = " << t[i];
+    else EXPECT_NEAR(schlick_out[i], expected_schlick, 1e-6) << "t = " << t[i];
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Arch, BadData, testing::ValuesIn(supported_archs()), arch_test_name);
+
+}  // namespace
+}  // namespace kutlog

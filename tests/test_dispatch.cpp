@@ -1,0 +1,180 @@
+// The run-time choice of arch (kutlog/dispatch.hpp): names, forcing, the environment
+// variables, errors for archs the CPU lacks, and thread safety. ctest also runs this binary
+// under KUTLOG_ARCH and KUTLOG_CPU_HIDE (tests/CMakeLists.txt), which is how a machine that
+// has every arch tests the paths of one that lacks some.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <latch>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "common/ulp.hpp"
+#include "kutlog/accuracy.hpp"
+#include "kutlog/dispatch.hpp"
+#include "kutlog/math.hpp"
+
+namespace kutlog {
+namespace {
+
+std::vector<float> sample_inputs() {
+  std::vector<float> x;
+  for (int i = 0; i < 1000; ++i) x.push_back(-3.0f + 0.006f * float(i));
+  return x;
+}
+
+// cos of every input within its measured bound: the kernel of whatever arch ran is right.
+void expect_cos_within_bound(const std::vector<float>& x, const std::vector<float>& out) {
+  const double bound = find_accuracy_bound("cos").value().max_ulp;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    ASSERT_LE(tools::ulp_error(out[i], std::cos(double(x[i]))), bound) << "x = " << x[i];
+}
+
+void expect_runtime_error_saying(const std::function<void()>& call, const std::string& words) {
+  try {
+    call();
+    ADD_FAILURE() << "no exception; expected one saying '" << words << "'";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find(words), std::string::npos) << error.what();
+  }
+}
+
+TEST(Dispatch, NamesRoundTripAndUnknownNamesAreRejected) {
+  for (Arch arch : kCompiledArchs) EXPECT_EQ(parse_arch(arch_name(arch)), arch);
+  EXPECT_THROW(parse_arch("avx1024"), std::invalid_argument);
+  EXPECT_THROW(parse_arch(""), std::invalid_argument);
+  EXPECT_THROW(force_arch("neon"), std::invalid_argument);
+}
+
+TEST(Dispatch, ForcingEachSupportedArchWorks) {
+  const std::vector<float> x = sample_inputs();
+  std::vector<float> out(x.size());
+  for (Arch arch : supported_archs()) {
+    ScopedArch forced(arch);
+    EXPECT_EQ(active_arch(), arch);
+    math::cos_u10(x.data(), out.data(), x.size());
+    expect_cos_within_bound(x, out);
+  }
+}
+
+// On this project's machine every arch is supported: ctest's KUTLOG_CPU_HIDE runs make some
+// unsupported, and then this test is not skipped.
+TEST(Dispatch, ForcingAnUnsupportedArchIsAClearErrorAndChangesNothing) {
+  int unsupported = 0;
+  for (Arch arch : kCompiledArchs) {
+    if (arch_supported(arch)) continue;
+    ++unsupported;
+    const Arch before = active_arch();
+    expect_runtime_error_saying([arch] { force_arch(arch); }, "not supported by this machine");
+    EXPECT_EQ(active_arch(), before);
+  }
+  if (unsupported == 0) GTEST_SKIP() << "this CPU supports every compiled arch";
+}
+
+TEST(Dispatch, KutlogArchEnvironmentVariableSelectsASupportedArch) {
+  const char* named = std::getenv("KUTLOG_ARCH");
+  if (!named || !arch_supported(parse_arch(named))) GTEST_SKIP() << "KUTLOG_ARCH unset or unsupported";
+  reset_arch();
+  EXPECT_EQ(active_arch(), parse_arch(named));
+}
+
+// KUTLOG_ARCH naming an arch the CPU lacks: the first use throws (never an illegal
+// instruction), and so does every later one.
+TEST(Dispatch, KutlogArchNamingAnUnsupportedArchIsAClearError) {
+  const char* named = std::getenv("KUTLOG_ARCH");
+  if (!named || arch_supported(parse_arch(named))) GTEST_SKIP() << "KUTLOG_ARCH unset or supported";
+  const std::vector<float> x = sample_inputs();
+  std::vector<float> out(x.size());
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    expect_runtime_error_saying([] { active_arch(); }, "KUTLOG_ARCH names arch");
+    expect_runtime_error_saying([&] { math::cos_u10(x.data(), out.data(), x.size()); },
+                                "not supported by this machine");
+  }
+}
+
+TEST(Dispatch, HiddenArchsAreUnsupported) {
+  const char* hidden = std::getenv("KUTLOG_CPU_HIDE");
+  if (!hidden || std::string(hidden) == "sse4.1") GTEST_SKIP() << "KUTLOG_CPU_HIDE unset or hides all";
+  const Arch arch = parse_arch(hidden);
+  EXPECT_FALSE(arch_supported(arch));
+  EXPECT_FALSE(arch_supported(Arch::avx512));  // builds on every other arch
+  EXPECT_TRUE(arch_supported(Arch::sse4_1));
+  EXPECT_NE(active_arch(), arch);
+}
+
+// KUTLOG_CPU_HIDE=sse4.1: a CPU without the baseline gets an error, not a crash.
+TEST(Dispatch, NoSupportedArchIsAClearError) {
+  const char* hidden = std::getenv("KUTLOG_CPU_HIDE");
+  if (!hidden || std::string(hidden) != "sse4.1") GTEST_SKIP() << "needs KUTLOG_CPU_HIDE=sse4.1";
+  EXPECT_TRUE(supported_archs().empty());
+  expect_runtime_error_saying([] { active_arch(); }, "lacks SSE4.1");
+}
+
+// KUTLOG_CPU_HIDE=avx1024: a name kutlog does not know is an error at the first query.
+TEST(Dispatch, UnknownHiddenArchIsAClearError) {
+  const char* hidden = std::getenv("KUTLOG_CPU_HIDE");
+  if (!hidden || std::string(hidden) != "avx1024") GTEST_SKIP() << "needs KUTLOG_CPU_HIDE=avx1024";
+  expect_runtime_error_saying([] { arch_supported(Arch::sse4_1); }, "KUTLOG_CPU_HIDE");
+}
+
+// ctest runs each test in its own process, so here the first use of the dispatch happens in
+// many threads at once: they must all see the same arch and compute right.
+TEST(Dispatch, FirstUseFromManyThreadsAtOnceAgrees) {
+  constexpr int kThreads = 32;
+  const std::vector<float> x = sample_inputs();
+  std::vector<std::vector<float>> out(kThreads, std::vector<float>(x.size()));
+  std::vector<Arch> seen(kThreads);
+  std::latch start(kThreads);
+  std::vector<std::thread> threads;
+  for (int i = 0; i < kThreads; ++i)
+    threads.emplace_back([&, i] {
+      start.arrive_and_wait();
+      seen[i] = active_arch();
+      math::cos_u10(x.data(), out[i].data(), x.size());
+    });
+  for (std::thread& thread : threads) thread.join();
+  for (int i = 0; i < kThreads; ++i) {
+    EXPECT_EQ(seen[i], seen[0]);
+    EXPECT_EQ(out[i], out[0]) << "thread " << i;
+  }
+  expect_cos_within_bound(x, out[0]);
+}
+
+// force_arch and reset_arch from one thread while others compute: every result is right,
+// whichever arch each call ran on.
+TEST(Dispatch, ForcingWhileOtherThreadsComputeIsSafe) {
+  constexpr int kWorkers = 4;
+  const std::vector<float> x = sample_inputs();
+  const std::vector<Arch> archs = supported_archs();
+  std::atomic<bool> done{false};
+  std::atomic<int> wrong{0};
+  std::vector<std::thread> workers;
+  const double bound = find_accuracy_bound("cos").value().max_ulp;
+  for (int w = 0; w < kWorkers; ++w)
+    workers.emplace_back([&] {
+      std::vector<float> out(x.size());
+      while (!done.load()) {
+        math::cos_u10(x.data(), out.data(), x.size());
+        for (std::size_t i = 0; i < x.size(); ++i)
+          if (tools::ulp_error(out[i], std::cos(double(x[i]))) > bound) ++wrong;
+      }
+    });
+  for (int round = 0; round < 300; ++round) {
+    force_arch(archs[round % archs.size()]);
+    if (round % 7 == 0) reset_arch();
+    std::this_thread::sleep_for(std::chrono::microseconds(100));  // let the workers run
+  }
+  done = true;
+  for (std::thread& worker : workers) worker.join();
+  reset_arch();
+  EXPECT_EQ(wrong.load(), 0);
+}
+
+}  // namespace
+}  // namespace kutlog
