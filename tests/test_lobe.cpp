@@ -149,9 +149,9 @@ TEST_P(LobePerArch, PerLaneAgainstTheReference) {
           const double scale =
               normalization == Normalization::none ? 1.0 : references[i].coef_exact();
           const double expected = references[i].eval(t[i]);
-          const double error = std::fabs(out[i] / scale - expected);
+          const double error = tools::lobe_abs_error(out[i], scale, expected);
           worst = std::max(worst, error);
-          if (expected >= 0.6) worst_ulp = std::max(worst_ulp, error / std::ldexp(1.0, std::ilogb(expected) - 23));
+          if (expected >= 0.6) worst_ulp = std::max(worst_ulp, tools::epicenter_ulps(error, expected));
         }
         EXPECT_LE(worst, bound.max_abs_error) << "k=" << k << " Q=" << Q;
         EXPECT_LE(worst_ulp, bound.max_epicenter_ulp) << "k=" << k << " Q=" << Q;
