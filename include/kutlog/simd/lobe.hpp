@@ -119,7 +119,9 @@ class PreparedPerLaneLobe {
     const F base = neg_mul_add(v, horner(v - F(kernel_.v_center), r_, kernel_.r_degree), F(1.0f));
     F value = detail::integer_power(base, kernel_.k);
     if (normalized_) value *= n_clamped * horner(y_offset, coef_k_, kernel_.k_degree);
-    return xsimd::select(t <= F(kernel_.t_guard) || v >= F(kernel_.v_cut), F(0.0f), value);
+    // 0 off the support, but NaN for a NaN n there too (the contract: NaN n gives NaN).
+    const auto off_support = t <= F(kernel_.t_guard) || v >= F(kernel_.v_cut);
+    return xsimd::select(off_support && !xsimd::isnan(n), F(0.0f), value);
   }
 
  private:
@@ -147,7 +149,8 @@ template <class Arch>
 inline floats<Arch> blinn_phong_xsimd(floats<Arch> t, floats<Arch> n,
                                       floats<Arch> scale = floats<Arch>(1.0f)) {
   using F = floats<Arch>;
-  return scale * xsimd::pow(xsimd::min(xsimd::max(t, F(0.0f)), F(1.0f)), n);
+  // max(0, .) and min(1, .) in this order keep NaN (x86 returns the second operand).
+  return scale * xsimd::pow(xsimd::min(F(1.0f), xsimd::max(F(0.0f), t)), n);
 }
 
 // scale * t^n with pow_u10.

@@ -20,7 +20,7 @@ inline floats<Arch> dot(const Vector3<Arch>& a, const Vector3<Arch>& b) {
   return mul_add(a.x, b.x, mul_add(a.y, b.y, a.z * b.z));
 }
 
-// N.H with H = (L + V) / |L + V|; 0 where L + V = 0.
+// N.H with H = (L + V) / |L + V|; 0 where L + V = 0 (or |L + V|^2 underflows); NaN in, NaN out.
 template <class Arch>
 inline floats<Arch> blinn_cosine(const Vector3<Arch>& normal, const Vector3<Arch>& to_light,
                                  const Vector3<Arch>& to_viewer) {
@@ -28,8 +28,9 @@ inline floats<Arch> blinn_cosine(const Vector3<Arch>& normal, const Vector3<Arch
   const Vector3<Arch> sum{to_light.x + to_viewer.x, to_light.y + to_viewer.y,
                           to_light.z + to_viewer.z};
   const F length_squared = dot(sum, sum);
-  return xsimd::select(length_squared > F(0.0f), dot(normal, sum) / xsimd::sqrt(length_squared),
-                       F(0.0f));
+  // == 0, not !(> 0): a NaN length must stay NaN.
+  return xsimd::select(length_squared == F(0.0f), F(0.0f),
+                       dot(normal, sum) / xsimd::sqrt(length_squared));
 }
 
 // R.V with R = 2 (N.L) N - L, from N.L.
