@@ -8,6 +8,7 @@
 
 #include "kutlog/lobe.hpp"
 #include "kutlog/reference.hpp"
+#include "lobe_cut.hpp"
 #include "polynomial_fit.hpp"
 
 namespace kutlog {
@@ -54,7 +55,7 @@ PerLaneLobe::PerLaneLobe(int k, double Q, double n_min, double n_max) : k_(k), Q
   // Every lane's lobe fits inside the widest one, that of n_min: t at or below its cut-off is
   // 0 for every lane, and G is fitted on its support.
   const ref::KutlogLobe widest(n_min, k, Q);
-  kernel.t_guard = float(std::cos(widest.cutoff_angle()));
+  kernel.t_guard = detail::float_at_or_below_cut(std::cos(widest.cutoff_angle()));
   const double w_max = 1 - std::cos(widest.cutoff_angle());
   const double y_lo = 1 / n_max, y_hi = 1 / n_min;
   kernel.y_center = float(0.5 * (y_lo + y_hi));

@@ -176,6 +176,42 @@ TEST_P(LobePerArch, PerLaneDataRuleAndClamping) {
   EXPECT_NEAR(out[6], ref::KutlogLobe(1000, 3, 0.5).eval(0.999f), 1e-6);
 }
 
+// Exponents whose support holds no float below 1, or almost (tests/fuzz found the peak zeroed
+// by a cut rounded up to 1, and NaN from fits that overflow float): the peak at t >= 1, 0 at
+// the float below 1 and lower, NaN for NaN.
+TEST_P(LobePerArch, HugeExponentsKeepTheDataRule) {
+  const std::vector<float> t = {1.0f, 1.5f, INFINITY, std::nextafter(1.0f, 0.0f), 0.5f, -1.0f,
+                                kNaN};
+  for (const LobeCase& c : {LobeCase{3e7, 1, 0.5}, LobeCase{1e20, 17, 0.99}}) {
+    const Lobe lobe(c.n, c.k, c.Q);
+    for (Variant variant : {Variant::precise, Variant::fast})
+      for (Normalization normalization : {Normalization::none, Normalization::exact_coef}) {
+        std::vector<float> out(t.size());
+        lobe.eval(t.data(), out.data(), t.size(), variant, normalization);
+        const float peak = normalization == Normalization::none ? 1.0f : float(lobe.coef_exact());
+        for (int i = 0; i < 3; ++i) EXPECT_EQ(out[i], peak) << "n = " << c.n << ", t = " << t[i];
+        for (int i = 3; i < 6; ++i) EXPECT_EQ(out[i], 0.0f) << "n = " << c.n << ", t = " << t[i];
+        EXPECT_TRUE(std::isnan(out[6]));
+      }
+  }
+  struct PerLaneCase {
+    int k;
+    double Q, n_min, n_max;
+  };
+  for (const PerLaneCase& c : {PerLaneCase{2, 0.6, 1e8, 2e8}}) {
+    const PerLaneLobe lobe(c.k, c.Q, c.n_min, c.n_max);
+    const float n_min = float(c.n_min);
+    const std::vector<float> n = {n_min, float(c.n_max), n_min, n_min, n_min, n_min, n_min};
+    std::vector<float> out(t.size());
+    lobe.eval(t.data(), n.data(), out.data(), t.size(), Normalization::none);
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(out[i], 1.0f) << "n = " << n[i] << ", t = " << t[i];
+    for (int i = 3; i < 6; ++i) EXPECT_EQ(out[i], 0.0f) << "n = " << n[i] << ", t = " << t[i];
+    lobe.eval(t.data(), n.data(), out.data(), 2, Normalization::exact_coef);
+    for (int i = 0; i < 2; ++i)
+      EXPECT_NEAR(out[i] / ref::coef_exact(n[i], c.k, c.Q), 1, 1e-5) << "n = " << n[i];
+  }
+}
+
 TEST(PerLaneLobe, Validation) {
   EXPECT_THROW(PerLaneLobe(3, 0.5, 2, 100), std::invalid_argument);   // n_min < k
   EXPECT_THROW(PerLaneLobe(3, 0.5, 100, 10), std::invalid_argument);  // n_max < n_min
