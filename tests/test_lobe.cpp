@@ -176,6 +176,24 @@ TEST_P(LobePerArch, PerLaneDataRuleAndClamping) {
   EXPECT_NEAR(out[6], ref::KutlogLobe(1000, 3, 0.5).eval(0.999f), 1e-6);
 }
 
+// n_min = n_max: every lane has the same n (tests/fuzz found NaN: the fit's nodes coincided).
+TEST_P(LobePerArch, PerLaneWithOneExponent) {
+  const PerLaneLobe lobe(4, 0.5, 6, 6);
+  const ref::KutlogLobe reference(6, 4, 0.5);
+  std::vector<float> t, n;
+  for (float v = -0.25f; v <= 1.25f; v += 1.0f / 1024) t.push_back(v), n.push_back(6);
+  n[0] = 2, n[1] = 100;  // clamped to 6
+  std::vector<float> out(t.size());
+  for (Normalization normalization : {Normalization::none, Normalization::exact_coef}) {
+    lobe.eval(t.data(), n.data(), out.data(), t.size(), normalization);
+    const double scale = normalization == Normalization::none ? 1.0 : reference.coef_exact();
+    for (std::size_t i = 0; i < t.size(); ++i)
+      ASSERT_LE(tools::lobe_abs_error(out[i], scale, reference.eval(t[i])),
+                kLobeBounds[2].max_abs_error)
+          << "t = " << t[i];
+  }
+}
+
 // Exponents whose support holds no float below 1, or almost (tests/fuzz found the peak zeroed
 // by a cut rounded up to 1, and NaN from fits that overflow float): the peak at t >= 1, 0 at
 // the float below 1 and lower, NaN for NaN.
@@ -198,7 +216,7 @@ TEST_P(LobePerArch, HugeExponentsKeepTheDataRule) {
     int k;
     double Q, n_min, n_max;
   };
-  for (const PerLaneCase& c : {PerLaneCase{2, 0.6, 1e8, 2e8}}) {
+  for (const PerLaneCase& c : {PerLaneCase{2, 0.6, 1e8, 2e8}, PerLaneCase{64, 0.4, 1e20, 1e22}}) {
     const PerLaneLobe lobe(c.k, c.Q, c.n_min, c.n_max);
     const float n_min = float(c.n_min);
     const std::vector<float> n = {n_min, float(c.n_max), n_min, n_min, n_min, n_min, n_min};
@@ -218,6 +236,7 @@ TEST(PerLaneLobe, Validation) {
   EXPECT_THROW(PerLaneLobe(0, 0.5, 10, 100), std::invalid_argument);
   EXPECT_THROW(PerLaneLobe(3, 1.5, 10, 100), std::invalid_argument);
   EXPECT_THROW(PerLaneLobe(3, 0.5, 10, INFINITY), std::invalid_argument);
+  EXPECT_THROW(PerLaneLobe(3, 0.5, 10, 1e39), std::invalid_argument);  // beyond float's n
 }
 
 INSTANTIATE_TEST_SUITE_P(Arch, LobePerArch, testing::ValuesIn(supported_archs()), arch_test_name);
