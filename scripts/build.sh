@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Configures and builds kutlog (Release) in ${KUTLOG_BUILD_DIR:-build}.
+# Configures and builds kutlog (Release) in ${KUTLOG_BUILD_DIR:-build}; arguments go to cmake
+# after the defaults (-DCMAKE_BUILD_TYPE=... overrides Release).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${KUTLOG_BUILD_DIR:-build}

@@ -1,8 +1,25 @@
 #!/usr/bin/env bash
 # Installs what is needed, builds, and runs the whole test suite (every label, exhaustive
-# sweeps included). A quick subset while you work: ctest --test-dir build -L quick
+# sweeps included). Then builds everything again with clang, AddressSanitizer and
+# UndefinedBehaviorSanitizer in build-sanitize and runs every test there except the exhaustive
+# sweeps (ctest -LE exhaustive: under ASan they would take hours; the sanitize build does not
+# even register them), the libFuzzer targets included: each replays its committed corpus and
+# crash inputs, then fuzzes for 60 seconds (KUTLOG_FUZZ_SECONDS).
+# Quick subsets while you work: ctest --test-dir build -L quick, and under the sanitizers
+# ctest --test-dir build-sanitize -L sanitize (everything there but the minutes of fuzzing).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup-debian.sh
 bash scripts/build.sh
 ctest --test-dir "${KUTLOG_BUILD_DIR:-build}" -j "${KUTLOG_JOBS:-2}" --output-on-failure
+
+sanitize_dir=${KUTLOG_SANITIZE_BUILD_DIR:-build-sanitize}
+KUTLOG_BUILD_DIR=$sanitize_dir bash scripts/build.sh -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_COMPILER=clang++-14 -DKUTLOG_SANITIZE=ON -DKUTLOG_FUZZ=ON
+ctest --test-dir "$sanitize_dir" -LE exhaustive -j "${KUTLOG_JOBS:-2}" --output-on-failure
+# How much each target fuzzed, from libFuzzer's final statistics (-print_final_stats=1).
+awk '/ Test: fuzz\./ { target = $3 }
+     /stat::number_of_executed_units/ { runs = $2 }
+     /stat::average_exec_per_sec/ && target !~ /corpus$/ {
+       printf "%s: %d executions, %d per second\n", target, runs, $2 }' \
+  "$sanitize_dir/Testing/Temporary/LastTest.log"

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "kutlog/reference.hpp"
+#include "lobe_cut.hpp"
 #include "polynomial_fit.hpp"
 
 namespace kutlog {
@@ -186,14 +187,20 @@ float double_base_power(const LobeKernel& kernel, float t) {
 LobeKernel fit_kernel(const ref::KutlogLobe& reference, const Shape& shape, double w_max,
                       double scale, const CheckPoints& points, const Target& target, bool fused) {
   LobeKernel kernel;
-  // F = 0 for t <= cos(gran), and below the horizon (t <= 0) when gran > pi/2: the largest
-  // float at or below the cut.
+  // F = 0 for t <= cos(gran), and below the horizon (t <= 0) when gran > pi/2.
   const double cut = reference.cutoff_angle() >= kPi / 2 ? 0.0 : std::cos(reference.cutoff_angle());
-  kernel.t_cut = float(cut);
-  if (double(kernel.t_cut) > cut) kernel.t_cut = std::nextafter(kernel.t_cut, -1.0f);
+  kernel.t_cut = detail::float_at_or_below_cut(cut);
   kernel.scale_f = float(scale);
   kernel.scale_d = scale;
   kernel.k = shape.k;
+  // No float below 1 on the support (n from about 1e7 up, by k and Q): F is the peak at
+  // t >= 1 and 0 below, which q = 0 gives exactly. A fit there divides by the support's width
+  // and overflows float (and 0 * inf at t = 1 is NaN).
+  if (kernel.t_cut == std::nextafter(1.0f, 0.0f)) {
+    kernel.form = LobeKernel::Form::float_polynomial;
+    kernel.degree = 0;
+    return kernel;
+  }
   const auto q_of = [&](int power) {
     return [&shape, power](Real w) { return Real(shape.one_minus_power(double(w), power)) / w; };
   };

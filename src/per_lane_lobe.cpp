@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
 #include "kutlog/lobe.hpp"
 #include "kutlog/reference.hpp"
+#include "lobe_cut.hpp"
 #include "polynomial_fit.hpp"
 
 namespace kutlog {
@@ -16,10 +18,20 @@ namespace {
 using detail::Real;
 
 // The lowest degree at which g's fit on [lo, hi], evaluated in float by Horner's rule in
-// x - center, has relative error at most `target` on a grid (or the maximal degree).
+// x - center, has relative error at most `target` on a grid; if none has, the degree of least
+// error (g is noisier than the target where coef_exact's closed form, which loses c 2^-52,
+// serves n beyond ~1e18).
 int fit_float(const std::function<Real(Real)>& g, double lo, double hi, double center,
               double target, PerLaneKernel::Coefficients& out) {
-  for (int degree = 1; degree <= PerLaneKernel::kMaxDegree; ++degree) {
+  out.fill(0);
+  // A single point (n_min = n_max): its value. Interpolation nodes there would coincide.
+  if (!(hi > lo)) {
+    out[0] = float(g(center));
+    return 0;
+  }
+  // Fits at `degree` into out; returns its largest error on the grid, infinite if NaN (a fit
+  // that overflows float).
+  const auto fit = [&](int degree) {
     const std::vector<Real> q = detail::fit_monomials(g, lo, hi, center, degree);
     for (int i = 0; i <= degree; ++i) out[i] = float(q[i]);
     double worst = 0;
@@ -29,11 +41,21 @@ int fit_float(const std::function<Real(Real)>& g, double lo, double hi, double c
       float value = out[degree];
       for (int i = degree; i-- > 0;) value = std::fma(value, s, out[i]);
       const double exact = double(g(x));
-      worst = std::max(worst, std::fabs(value - exact) / std::fabs(exact));
+      const double error = std::fabs(value - exact) / std::fabs(exact);
+      if (!(error <= worst)) worst = std::isnan(error) ? INFINITY : error;
     }
-    if (worst <= target) return degree;
+    return worst;
+  };
+  int best_degree = 1;
+  double best_error = INFINITY;
+  for (int degree = 1; degree <= PerLaneKernel::kMaxDegree; ++degree) {
+    const double error = fit(degree);
+    if (error <= target) return degree;
+    if (error < best_error) best_error = error, best_degree = degree;
   }
-  return PerLaneKernel::kMaxDegree;
+  out.fill(0);
+  fit(best_degree);
+  return best_degree;
 }
 
 }  // namespace
@@ -49,13 +71,16 @@ PerLaneLobe::PerLaneLobe(int k, double Q, double n_min, double n_max) : k_(k), Q
   if (!(n_max >= n_min))
     throw std::invalid_argument("kutlog: n_max = " + std::to_string(n_max) +
                                 " is invalid; n_max must be >= n_min = " + std::to_string(n_min));
+  if (!(n_max <= std::numeric_limits<float>::max()))
+    throw std::invalid_argument("kutlog: n_max = " + std::to_string(n_max) +
+                                " is invalid; the lanes' n are floats, n_max must be <= FLT_MAX");
   PerLaneKernel& kernel = kernel_;
   kernel.n_min = float(n_min);
   kernel.n_max = float(n_max);
   // Every lane's lobe fits inside the widest one, that of n_min: t at or below its cut-off is
   // 0 for every lane, and G is fitted on its support.
   const ref::KutlogLobe widest(n_min, k, Q);
-  kernel.t_guard = float(std::cos(widest.cutoff_angle()));
+  kernel.t_guard = detail::float_at_or_below_cut(std::cos(widest.cutoff_angle()));
   const double w_max = 1 - std::cos(widest.cutoff_angle());
   const double y_lo = 1 / n_max, y_hi = 1 / n_min;
   kernel.y_center = float(0.5 * (y_lo + y_hi));

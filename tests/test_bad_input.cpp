@@ -43,6 +43,7 @@ TEST(BadParameters, PerLaneLobeNamesEachInvalidParameterAndItsRange) {
   }
   expect_invalid([] { PerLaneLobe(3, 0.5, 2, 100); }, "n_min", ">= k");
   expect_invalid([] { PerLaneLobe(3, 0.5, 100, 10); }, "n_max", ">= n_min");
+  expect_invalid([] { PerLaneLobe(3, 0.5, 10, 1e39); }, "n_max", "<= FLT_MAX");  // lanes are floats
   expect_invalid([] { PerLaneLobe(0, 0.5, 10, 100); }, "k", "integer in [1, 64]");
   expect_invalid([] { PerLaneLobe(3, 1.5, 10, 100); }, "Q", "in (0, 1)");
 }

@@ -111,13 +111,18 @@ TEST_P(ShadePerArch, MaskKeepsUnselectedLanesAndTailsStayInside) {
 
 TEST_P(ShadePerArch, OppositeLightAndViewerAndNaN) {
   const Lobe lobe(20, 1, 0.5);
-  const float nx[] = {0, 0}, ny[] = {0, 0}, nz[] = {1, 1};
-  const float lx[] = {0.6f, NAN}, ly[] = {0, 0}, lz[] = {0.8f, 0.8f};
-  const float vx[] = {-0.6f, 0}, vy[] = {0, 0}, vz[] = {-0.8f, 1};
-  float out[2];
-  shade(lobe, {nx, ny, nz}, {lx, ly, lz}, {vx, vy, vz}, out, 2);
-  EXPECT_EQ(out[0], 0.0f);  // L + V = 0: no half vector, no highlight
-  EXPECT_TRUE(std::isnan(out[1]));
+  const float nx[] = {0, 0, 0}, ny[] = {0, 0, 0}, nz[] = {1, 1, 1};
+  const float lx[] = {0.6f, NAN, 0.6f}, ly[] = {0, 0, 0}, lz[] = {0.8f, 0.8f, 0.8f};
+  const float vx[] = {-0.6f, 0, NAN}, vy[] = {0, 0, 0}, vz[] = {-0.8f, 1, 1};
+  float out[3];
+  for (Reflection reflection : {Reflection::blinn, Reflection::phong}) {
+    ShadeOptions options;
+    options.reflection = reflection;
+    shade(lobe, {nx, ny, nz}, {lx, ly, lz}, {vx, vy, vz}, out, 3, nullptr, options);
+    if (reflection == Reflection::blinn) EXPECT_EQ(out[0], 0.0f);  // L + V = 0: no half vector
+    EXPECT_TRUE(std::isnan(out[1]));
+    EXPECT_TRUE(std::isnan(out[2]));  // Blinn: a NaN length of L + V, not "L + V = 0"
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Arch, ShadePerArch, testing::ValuesIn(supported_archs()), arch_test_name);

@@ -98,8 +98,9 @@ struct PerLaneKernel {
 // A lobe whose exponent n varies per lane (a glossiness map), k and Q per material: c and the
 // exact coef are computed per lane, in SIMD, from polynomials in 1/n fitted for the range
 // [n_min, n_max] at setup.
-//   Domain: k <= n_min <= n_max (std::invalid_argument otherwise, naming the parameter and
-//   its range); lanes' n outside [n_min, n_max] are clamped to it; NaN n or t gives NaN.
+//   Domain: k <= n_min <= n_max <= FLT_MAX, the lanes' n being floats (std::invalid_argument
+//   otherwise, naming the parameter and its range); lanes' n outside [n_min, n_max] are
+//   clamped to it; NaN n or t gives NaN.
 //   Accuracy: |error| <= 2^-20 relative to the peak (1, or the lane's coef when normalized),
 //   measured on random (t, n) over the grid k in 1..5, Q in {0.1, 0.5, 0.9}, n in
 //   [k + 1, 10^4]; the epicenter's ULP error is reported by kutlog/accuracy.hpp.

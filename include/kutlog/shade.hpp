@@ -7,10 +7,11 @@
 //
 // N, L and V must be unit vectors (the cosines are not renormalized; rounding of normalized
 // vectors is covered by the lobe's data rule, t > 1 giving F(1)). Where L + V = 0 the half
-// vector is undefined and the specular term is 0. A NaN or infinite component of N, L or V
-// gives NaN. The cosine form takes t under the lobe's data rule and n_dot_l as given: the
-// product F(t) * max(n_dot_l, 0) in IEEE arithmetic (NaN gives NaN, +inf gives inf, or NaN
-// where F = 0).
+// vector is undefined and the specular term is 0; where |L + V| < 2^-63, L and V opposite to
+// within float rounding, |L + V|^2 underflows and the term is 0 or inexact. A NaN or infinite
+// component of N, L or V gives NaN. The cosine form takes t under the lobe's data rule and
+// n_dot_l as given: the product F(t) * max(n_dot_l, 0) in IEEE arithmetic (NaN gives NaN, +inf
+// gives inf, or NaN where F = 0).
 //
 // mask (optional, may be null): lane i is shaded where mask[i] != 0; elsewhere out[i] keeps
 // its value (AVX2 and AVX-512 store with a lane mask; SSE4.1, and the last partial batch, may

@@ -71,14 +71,12 @@ std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, std::uint32_t stride, u
         const double scale = normalization == Normalization::exact_coef ? lobe.coef_exact() : 1.0;
         lobe.eval(t.data(), out.data(), t.size(), variant, normalization);
         for (std::size_t i = 0; i < t.size(); ++i) {
-          const double relative = double(out[i]) / scale;
-          const double error = std::fabs(relative - expected[i]);
+          const double error = lobe_abs_error(out[i], scale, expected[i]);
           if (!(error <= errors.max_abs_error))  // NaN counts as the worst
             errors.max_abs_error = std::isnan(error) ? INFINITY : error,
             errors.worst_abs_input = t[i];
           if (expected[i] >= 0.6) {
-            // in ulps of the float F: the ulp at F's binade (F < 1 here, or exactly 1)
-            const double ulps = error / std::ldexp(1.0, std::ilogb(expected[i]) - 23);
+            const double ulps = epicenter_ulps(error, expected[i]);
             if (ulps > errors.max_epicenter_ulp)
               errors.max_epicenter_ulp = ulps, errors.worst_ulp_input = t[i];
           }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 
@@ -19,6 +20,15 @@ struct LobeErrors {
   float worst_ulp_input = std::numeric_limits<float>::quiet_NaN();
   std::uint64_t inputs = 0;
 };
+
+// One output of a lobe kernel against the reference F: |out / scale - F|, and that error in ulps
+// of the float F (its binade's ulp), the unit of the epicenter bound. NaN errors stay NaN.
+inline double lobe_abs_error(float out, double scale, double expected) {
+  return std::fabs(double(out) / scale - expected);
+}
+inline double epicenter_ulps(double abs_error, double expected) {
+  return abs_error / std::ldexp(1.0, std::ilogb(expected) - 23);
+}
 
 // The kernels in the order variant x normalization: precise, precise * coef, fast, fast * coef.
 inline constexpr Variant kLobeVariants[] = {Variant::precise, Variant::fast};

@@ -119,7 +119,9 @@ class PreparedPerLaneLobe {
     const F base = neg_mul_add(v, horner(v - F(kernel_.v_center), r_, kernel_.r_degree), F(1.0f));
     F value = detail::integer_power(base, kernel_.k);
     if (normalized_) value *= n_clamped * horner(y_offset, coef_k_, kernel_.k_degree);
-    return xsimd::select(t <= F(kernel_.t_guard) || v >= F(kernel_.v_cut), F(0.0f), value);
+    // 0 off the support, but NaN for a NaN n there too (the contract: NaN n gives NaN).
+    const auto off_support = t <= F(kernel_.t_guard) || v >= F(kernel_.v_cut);
+    return xsimd::select(off_support && !xsimd::isnan(n), F(0.0f), value);
   }
 
  private:

@@ -20,8 +20,8 @@ inline floats<Arch> dot(const Vector3<Arch>& a, const Vector3<Arch>& b) {
   return mul_add(a.x, b.x, mul_add(a.y, b.y, a.z * b.z));
 }
 
-// N.H with H = (L + V) / |L + V|; 0 where L + V = 0. Tested as == 0, not !(> 0), so that a
-// NaN in L or V stays NaN.
+// N.H with H = (L + V) / |L + V|; 0 where L + V = 0 (or |L + V|^2 underflows). Tested as
+// == 0, not !(> 0), so that a NaN in L or V stays NaN.
 template <class Arch>
 inline floats<Arch> blinn_cosine(const Vector3<Arch>& normal, const Vector3<Arch>& to_light,
                                  const Vector3<Arch>& to_viewer) {
