@@ -19,8 +19,7 @@ using detail::Real;
 
 // The lowest degree at which g's fit on [lo, hi], evaluated in float by Horner's rule in
 // x - center, has relative error at most `target` on a grid; if none has, the degree of least
-// error (g is noisier than the target where coef_exact's closed form, which loses c 2^-52,
-// serves n beyond ~1e18).
+// error.
 int fit_float(const std::function<Real(Real)>& g, double lo, double hi, double center,
               double target, PerLaneKernel::Coefficients& out) {
   out.fill(0);

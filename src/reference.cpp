@@ -131,15 +131,34 @@ double KutlogLobe::eval(double t) const {
   return lobe_above_horizon(std::acos(t));
 }
 
-double KutlogLobe::integral() const {
-  // cos^k(u) = 2^-k sum_j C(k,j) cos((k-2j)u) and cos(theta) sin(theta) = sin(2 theta)/2;
-  // cos(a theta) sin(2 theta) = (sin((2+a) theta) + sin((2-a) theta)) / 2.
+double KutlogLobe::integral() const { return integral_times_c_squared() / (c_ * c_); }
+
+double KutlogLobe::integral_times_c_squared() const {
+  // cos^k(u) = 2^-k sum_j C(k,j) cos(a_j theta / c) with a_j = (k - 2j) c, and
+  // cos(a theta) cos(theta) sin(theta) = (sin((2+a) theta) + sin((2-a) theta)) / 4; each sine
+  // integrates to S(b) = 2 sin^2(bG/2) / b. Int ~ 1/c^2 while S(2 +- a) ~ 1/a, so for
+  // |a| >= 4 the pair is summed in one fraction whose numerator has no cancellation:
+  //   S(2+a) + S(2-a) = 2 [2 (s+^2 + s-^2) - a sin(2G) sin(aG)] / ((2-a)(2+a)),
+  //   s+- = sin(G +- aG/2)   (sin^2(G+x) - sin^2(G-x) = sin(2G) sin(2x)),
+  // and, written with m = a/c, it is c^2 times the fraction below. Near a = +-2 the fraction
+  // is 0/0: there the two sines are kept apart.
   const double G = integration_limit();
+  const double sin_2G = std::sin(2 * G);
   double binomial_weight = std::ldexp(1.0, -k_);  // C(k,j) / 2^k
   double sum = 0;
   for (int j = 0; j <= k_; ++j) {
-    const double a = (k_ - 2 * j) * c_;
-    sum += binomial_weight * (sine_integral_to(2 + a, G) + sine_integral_to(2 - a, G));
+    const int m = k_ - 2 * j;
+    const double a = m * c_;
+    double pair;  // c^2 (S(2+a) + S(2-a))
+    if (std::fabs(a) < 4) {
+      pair = c_ * c_ * (sine_integral_to(2 + a, G) + sine_integral_to(2 - a, G));
+    } else {
+      const double s_plus = std::sin(G + 0.5 * a * G), s_minus = std::sin(G - 0.5 * a * G);
+      const double numerator = 2 * (s_plus * s_plus + s_minus * s_minus) -
+                               a * sin_2G * std::sin(a * G);
+      pair = 2 * numerator / ((2 / c_ - m) * (2 / c_ + m));
+    }
+    sum += binomial_weight * pair;
     binomial_weight = binomial_weight * (k_ - j) / (j + 1);
   }
   return sum / 4;
@@ -151,7 +170,10 @@ double KutlogLobe::integral_quadrature() const {
       integration_limit());
 }
 
-double KutlogLobe::coef_exact() const { return 1 / (2 * pi * integral()); }
+double KutlogLobe::coef_exact() const {
+  // From c^2 Int, not Int: for n near DBL_MAX, Int is below the normal doubles.
+  return c_ * c_ / (2 * pi * integral_times_c_squared());
+}
 
 double KutlogLobe::coef_fit() const {
   const double n = n_, k = k_, Q = Q_;
@@ -163,7 +185,7 @@ double KutlogLobe::coef_fit() const {
   return (1 - weight) * low_q_fit + weight * high_q_fit;
 }
 
-double KutlogLobe::energy(double coef) const { return coef * 2 * pi * integral_quadrature(); }
+double KutlogLobe::energy(double coef) const { return coef * (2 * pi * integral_quadrature()); }
 
 double kutlog_c(double n, int k, double Q) { return KutlogLobe(n, k, Q).c(); }
 double cutoff_angle(double n, int k, double Q) { return KutlogLobe(n, k, Q).cutoff_angle(); }
@@ -182,7 +204,7 @@ double lafortune_willems_coef(double n) {
 
 double blinn_phong_exact_coef(double n) {
   validate_exponent(n);
-  return (n + 2) * (n + 4) / (8 * pi * (std::exp2(-n / 2) + n));
+  return (n + 2) / (8 * pi) * ((n + 4) / (std::exp2(-n / 2) + n));  // (n+2)(n+4) overflows
 }
 
 double blinn_phong_approx_coef(double n) {

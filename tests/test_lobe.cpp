@@ -215,7 +215,8 @@ TEST_P(LobePerArch, HugeExponentsKeepTheDataRule) {
     int k;
     double Q, n_min, n_max;
   };
-  for (const PerLaneCase& c : {PerLaneCase{2, 0.6, 1e8, 2e8}, PerLaneCase{64, 0.4, 1e20, 1e22}}) {
+  for (const PerLaneCase& c : {PerLaneCase{2, 0.6, 1e8, 2e8}, PerLaneCase{64, 0.4, 1e20, 1e22},
+                               PerLaneCase{5, 0.5, 1e30, 3e38}}) {
     const PerLaneLobe lobe(c.k, c.Q, c.n_min, c.n_max);
     const float n_min = float(c.n_min);
     const std::vector<float> n = {n_min, float(c.n_max), n_min, n_min, n_min, n_min, n_min};

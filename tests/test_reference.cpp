@@ -41,6 +41,20 @@ TEST_P(ClosedFormVsQuadrature, AgreeTo1e12) {
           << " quadrature=" << quadrature;
     }
 }
+// Up to DBL_MAX, where summing each cosine's two sines apart lost c 2^-52 (0.1 at n = 1e30,
+// a negative Int at 1e32) and Int leaves the normal doubles: coef stays finite and exact.
+TEST_P(ClosedFormVsQuadrature, HugeExponentsAgreeTo1e14) {
+  const int k = GetParam() == 8 ? 64 : GetParam();
+  for (double Q : kAnchors)
+    for (double n : {1e6, 1e10, 1e20, 1e32, 1e100, 1e300, std::numeric_limits<double>::max()}) {
+      const KutlogLobe lobe(n, k, Q);
+      const double quadrature = lobe.integral_quadrature();
+      EXPECT_LE(std::fabs(lobe.integral() / quadrature - 1), 1e-14)
+          << "n=" << n << " k=" << k << " Q=" << Q;
+      EXPECT_LE(std::fabs(lobe.coef_exact() * (2 * pi * quadrature) - 1), 1e-14)
+          << "n=" << n << " k=" << k << " Q=" << Q;
+    }
+}
 INSTANTIATE_TEST_SUITE_P(K, ClosedFormVsQuadrature, testing::Range(1, 9),
                          [](const auto& info) { return "k" + std::to_string(info.param); });
 
@@ -181,6 +195,13 @@ TEST(Normalizations, BlinnPhongExactFactorNormalizesAtNormalIncidence) {
         0, pi / 2);
     EXPECT_NEAR(blinn_phong_exact_coef(n) * 2 * pi * integral, 1, 1e-12) << "n=" << n;
   }
+}
+
+// (n + 2)(n + 4) / (8 pi (2^(-n/2) + n)) tends to n / (8 pi); its product overflows from
+// n ~ 1e154, the coefficient does not.
+TEST(Normalizations, BlinnPhongExactFactorIsFiniteUpToDblMax) {
+  for (double n : {1e20, 1e160, std::numeric_limits<double>::max()})
+    EXPECT_NEAR(blinn_phong_exact_coef(n) / (n / (8 * pi)), 1, 1e-15) << "n=" << n;
 }
 
 TEST(Normalizations, CommonApproximationSlightlyOverestimatesTheExactFactor) {

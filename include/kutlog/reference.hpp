@@ -92,8 +92,9 @@ class KutlogLobe {
   double eval(double t) const;
 
   // Int by the closed form for integer k: cos^k expands into cosines of multiples of c*theta,
-  // each of which integrates against sin(2 theta)/2 in elementary functions. Relative error
-  // about c * 2^-52 (cancellation between the k+1 terms grows with c).
+  // each of which integrates against sin(2 theta)/2 in elementary functions; the two sines
+  // of each cosine are summed in one fraction, free of the cancellation (relative c * 2^-52)
+  // that summing them apart has for large c. Relative error about 1e-15 for every valid n.
   double integral() const;
   // Int by adaptive Gauss-Kronrod quadrature of eval_angle(theta) cos(theta) sin(theta): an
   // independent check of integral(), relative error below 1e-14.
@@ -116,6 +117,9 @@ class KutlogLobe {
  private:
   // cos^k(c x) before the cut-off, 0 past it; x in [0, pi/2].
   double lobe_above_horizon(double x) const;
+  // c^2 Int (integral() and coef_exact() scale it): Int ~ 0.9 / c^2 falls out of the normal
+  // doubles for n near DBL_MAX, c^2 Int does not.
+  double integral_times_c_squared() const;
 
   double n_;
   int k_;
