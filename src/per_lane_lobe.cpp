@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -18,10 +19,9 @@ namespace {
 using detail::Real;
 
 // The lowest degree at which g's fit on [lo, hi], evaluated in float by Horner's rule in
-// x - center, has relative error at most `target` on a grid; if none has, the degree of least
-// error.
-int fit_float(const std::function<Real(Real)>& g, double lo, double hi, double center,
-              double target, PerLaneKernel::Coefficients& out) {
+// x - center, has relative error at most `target` on a grid; none if no degree has.
+std::optional<int> fit_float(const std::function<Real(Real)>& g, double lo, double hi,
+                             double center, double target, PerLaneKernel::Coefficients& out) {
   out.fill(0);
   // A single point (n_min = n_max): its value. Interpolation nodes there would coincide.
   if (!(hi > lo)) {
@@ -45,16 +45,9 @@ int fit_float(const std::function<Real(Real)>& g, double lo, double hi, double c
     }
     return worst;
   };
-  int best_degree = 1;
-  double best_error = INFINITY;
-  for (int degree = 1; degree <= PerLaneKernel::kMaxDegree; ++degree) {
-    const double error = fit(degree);
-    if (error <= target) return degree;
-    if (error < best_error) best_error = error, best_degree = degree;
-  }
-  out.fill(0);
-  fit(best_degree);
-  return best_degree;
+  for (int degree = 1; degree <= PerLaneKernel::kMaxDegree; ++degree)
+    if (fit(degree) <= target) return degree;
+  return std::nullopt;
 }
 
 }  // namespace
@@ -84,38 +77,49 @@ PerLaneLobe::PerLaneLobe(int k, double Q, double n_min, double n_max) : k_(k), Q
   const double y_lo = 1 / n_max, y_hi = 1 / n_min;
   kernel.y_center = float(0.5 * (y_lo + y_hi));
   const double theta_k = ref::acos_of_root(Q, k);
+  // A fit that misses is never kept: the material is refused. Seen only for a range of n too
+  // wide for one polynomial in 1/n: c^2 / n changes its shape where ln(1/Q) / n passes 1,
+  // so tiny Q with n over many decades (Q = 1e-300, n in [1, 10^38]).
+  const auto degree_or_refuse = [&](const char* what, std::optional<int> degree) {
+    if (degree) return *degree;
+    throw std::invalid_argument("kutlog: n_max = " + std::to_string(n_max) +
+                                " is invalid with n_min = " + std::to_string(n_min) + " and Q = " +
+                                std::to_string(Q) + ": the range is too wide for one "
+                                "PerLaneLobe (its fit of " + what + " misses 2^-23); split it "
+                                "over several PerLaneLobes");
+  };
   constexpr double kTarget = 0x1p-23;
   // c^2 / n = theta_k^2 y / acos(Q^y)^2 and coef / n = y coef(1/y): analytic in y.
-  kernel.h_degree = fit_float(
+  kernel.h_degree = degree_or_refuse("c^2 / n", fit_float(
       [&](Real y) {
         const double theta_n = ref::acos_of_root(Q, double(1 / y));
         return Real(theta_k * theta_k) * y / Real(theta_n * theta_n);
       },
-      y_lo, y_hi, kernel.y_center, kTarget, kernel.h);
-  kernel.k_degree = fit_float(
+      y_lo, y_hi, kernel.y_center, kTarget, kernel.h));
+  kernel.k_degree = degree_or_refuse("coef / n", fit_float(
       [&](Real y) { return y * Real(ref::coef_exact(double(1 / y), k, Q)); }, y_lo, y_hi,
-      kernel.y_center, kTarget, kernel.coef_k);
+      kernel.y_center, kTarget, kernel.coef_k));
   // theta^2 / w = (2 asin(sqrt(w/2)))^2 / w, analytic up to w = 2.
-  kernel.g_degree = fit_float(
+  kernel.g_degree = degree_or_refuse("acos(t)^2 / (1 - t)", fit_float(
       [](Real w) {
         if (w < 1e-30L) return Real(2);
         const Real theta = 2 * std::asin(std::sqrt(w / 2));
         return theta * theta / w;
       },
-      0, std::max(w_max, 1e-6), 0, kTarget, kernel.g);
+      0, std::max(w_max, 1e-6), 0, kTarget, kernel.g));
   // The base B = cos(sqrt(v)) = 1 - v R(v) on [0, (pi/2)^2], F = B^k. R's relative error
   // reaches B multiplied by v R = 1 - B <= 1, and F multiplied by k. (Fitting cos^k directly
   // needs degree 20 and more in float for k >= 3: its expansions cancel at one end or the
   // other.)
   kernel.v_cut = float(ref::pi * ref::pi / 4);
   kernel.v_center = kernel.v_cut / 2;
-  kernel.r_degree = fit_float(
+  kernel.r_degree = degree_or_refuse("(1 - cos(sqrt(v))) / v", fit_float(
       [](Real v) {
         if (v < 1e-30L) return Real(0.5);
         const Real half_sine = std::sin(std::sqrt(v) / 2);
         return 2 * half_sine * half_sine / v;
       },
-      0, double(kernel.v_cut), kernel.v_center, kTarget, kernel.r);
+      0, double(kernel.v_cut), kernel.v_center, kTarget, kernel.r));
   kernel.k = k;
 }
 

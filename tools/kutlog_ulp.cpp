@@ -98,7 +98,7 @@ int measure_lobes(const std::vector<kutlog::Arch>& archs, const std::vector<std:
                   const std::vector<std::string>& n_list, const std::vector<int>& k_list,
                   const std::vector<double>& q_list, unsigned threads, Format format) {
   Table table({"function", "arch", "variant", "n", "k", "Q", "max_abs_err", "max_ulp_epicenter",
-               "worst_input"});
+               "worst_input", "min_output", "max_output"});
   for (kutlog::Arch arch : archs) {
     const kutlog::ScopedArch forced(arch);
     for (int k : k_list)
@@ -106,7 +106,7 @@ int measure_lobes(const std::vector<kutlog::Arch>& archs, const std::vector<std:
         for (const std::string& n_text : n_list) {
           const double n = exponent_of(n_text, k);
           const kutlog::Lobe lobe(n, k, Q);  // validates
-          const auto errors = measure_lobe(lobe, 1, threads);
+          const auto errors = measure_lobe(lobe, {}, threads);
           for (int i = 0; i < 4; ++i) {
             const std::string variant = i < 2 ? "precise" : "fast";
             if (std::find(variants.begin(), variants.end(), variant) == variants.end()) continue;
@@ -115,7 +115,8 @@ int measure_lobes(const std::vector<kutlog::Arch>& archs, const std::vector<std:
                            std::string(kutlog::arch_name(arch)), variant, cell("%g", n),
                            cell("%d", k), cell("%g", Q), cell("%.3g", e.max_abs_error),
                            cell("%.3f", e.max_epicenter_ulp),
-                           cell("%.9g", e.max_abs_error > 0 ? e.worst_abs_input : e.worst_ulp_input)});
+                           cell("%.9g", e.max_abs_error > 0 ? e.worst_abs_input : e.worst_ulp_input),
+                           cell("%.9g", e.min_output), cell("%.9g", e.max_output)});
           }
         }
   }

@@ -12,16 +12,24 @@
 // such as n close to k), the lobe is evaluated in double lanes as B^k with B = cos(c acos t),
 // whose fit always converges.
 //
-// Accuracy (measured over every float t in [-1, 1] on the grid n in {k+1, 10, 100, 1000,
-// 10000}, k in 1..5, Q in {0.1, 0.5, 0.9}, every arch; kutlog/accuracy.hpp has the numbers):
-//   precise: |error| <= 2^-22 everywhere, <= 2 ULP where F >= 0.6 (the epicenter);
-//   fast:    |error| <= 2^-16 everywhere.
-// Normalized results (coef * F) are measured relative to coef: |out / coef - F| against the
-// same bounds.
+// Contract of the value returned, out, against the exact scale * F (scale = coef when
+// normalized, else 1), on every arch (kutlog/accuracy.hpp has the measured numbers):
+//   always:  0 <= out <= peak, the output at t = 1 (1, or coef rounded to float);
+//   precise: |out - scale F| <= 2^-22 scale everywhere, and <= 2 ulps of the float scale F
+//            where F >= 0.6 (the epicenter);
+//   fast:    |out - scale F| <= 2^-16 scale everywhere.
+// Measured over every float t in [-1, 1] on the grid n in {k+1, 10, 100, 1000, 10000}, k in
+// 1..5, Q in {0.1, 0.5, 0.9}, and on random lobes over n in [0.5, 10^6], k in 1..64, Q in
+// [0.01, 0.99]; each kernel is accepted at setup only after a bit-exact simulation of its
+// arithmetic met the bound (a fit that misses is never kept).
 //
 // Data rule (the reference's): t > 1 gives F(1) = 1 (coef when normalized), t at or below
 // cos(gran) and t <= 0 give 0, NaN gives NaN. Any count, any alignment, out may equal t.
 // Thread-safe (const), no allocation in eval.
+//
+// Normalization::exact_coef needs coef <= FLT_MAX (n up to about 10^38, by k and Q): beyond,
+// every normalized call throws std::invalid_argument before writing anything (a coef of +inf
+// would turn the peak into inf and the rest into NaN); Normalization::none works for every n.
 #pragma once
 
 #include <array>
@@ -73,20 +81,26 @@ class Lobe {
   // The precomputed kernel of a variant, for users who inline kutlog/simd/lobe.hpp: each was
   // fitted and checked for the arithmetic it will run on, with fused multiply-add (AVX2,
   // AVX-512: simd::has_fused_fma<Arch>) or without (SSE4.1).
+  // Throws as eval does for Normalization::exact_coef when coef does not fit in a float.
   const LobeKernel& kernel(Variant variant, Normalization normalization, bool fused_fma) const {
+    if (normalization == Normalization::exact_coef && !coef_fits_float_) throw_coef_overflow();
     return kernels_[int(variant)][int(normalization)][fused_fma];
   }
 
  private:
+  [[noreturn]] void throw_coef_overflow() const;
+
   double n_, Q_;
   int k_;
   double c_, cutoff_angle_, coef_exact_;
+  bool coef_fits_float_;
   LobeKernel kernels_[2][2][2];  // variant, normalization, fused multiply-add
 };
 
 // What the per-lane kernel needs of one material, precomputed (kutlog/simd/lobe.hpp). With
 // y = 1/n: c^2 = n H(y - y_center), coef = n K(y - y_center); theta^2 = acos(t)^2 = w G(w),
-// w = 1 - t; v = c^2 theta^2 and F = (1 - v R(v - v_center))^k, 0 for v >= v_cut = (pi/2)^2.
+// w = 1 - t; v = c^2 theta^2 and F = (1 - v R(v - v_center))^k, 0 for v >= v_cut = (pi/2)^2,
+// the power in double lanes.
 struct PerLaneKernel {
   static constexpr int kMaxDegree = 20;
   using Coefficients = std::array<float, kMaxDegree + 1>;
@@ -100,10 +114,12 @@ struct PerLaneKernel {
 // [n_min, n_max] at setup.
 //   Domain: k <= n_min <= n_max <= FLT_MAX, the lanes' n being floats (std::invalid_argument
 //   otherwise, naming the parameter and its range); lanes' n outside [n_min, n_max] are
-//   clamped to it; NaN n or t gives NaN.
-//   Accuracy: |error| <= 2^-20 relative to the peak (1, or the lane's coef when normalized),
-//   measured on random (t, n) over the grid k in 1..5, Q in {0.1, 0.5, 0.9}, n in
-//   [k + 1, 10^4]; the epicenter's ULP error is reported by kutlog/accuracy.hpp.
+//   clamped to it; NaN n or t gives NaN. A range too wide for one fit in 1/n (tiny Q with n
+//   over many decades, e.g. Q = 1e-300 and n in [1, 10^38]) is refused the same way: split it.
+//   Contract: 0 <= out <= the lane's output at t = 1; |out - scale F| <= 2^-20 scale (scale:
+//   1, or the lane's coef when normalized), measured on random (t, n) lanes of random
+//   materials over every k in 1..64, Q from 10^-6 to 1 - 5 10^-7 and n up to FLT_MAX
+//   (tests/test_lobe.cpp); the epicenter's ULP error is reported by kutlog/accuracy.hpp.
 class PerLaneLobe {
  public:
   PerLaneLobe(int k, double Q, double n_min, double n_max);

@@ -294,7 +294,8 @@ Range lobe_range(const LobeUnderTest& lobe, Variant variant, Normalization norma
   if (t_hi >= 1) hi = t_lo < 1 ? std::max(peak, (1 + bound) * scale) : peak;
   else if (t_hi <= lobe.cut) hi = 0.0;  // the cut may round to 1 in double: t = 1 first
   else hi = smooth(t_hi) + bound * scale;
-  return {lo, hi};
+  // The hard contract: 0 <= out <= peak.
+  return {std::max(lo, 0.0), std::min(hi, peak)};
 }
 
 bool product_within(float out, Range lobe, double factor_lo, double factor_hi) {

@@ -9,40 +9,61 @@
 #include "kutlog/reference.hpp"
 
 namespace kutlog::tools {
-namespace {
 
-void merge(LobeErrors& into, const LobeErrors& from) {
-  if (from.max_abs_error > into.max_abs_error)
-    into.max_abs_error = from.max_abs_error, into.worst_abs_input = from.worst_abs_input;
-  if (from.max_epicenter_ulp > into.max_epicenter_ulp)
-    into.max_epicenter_ulp = from.max_epicenter_ulp, into.worst_ulp_input = from.worst_ulp_input;
-  into.inputs += from.inputs;
+void LobeErrors::add(float t, float out, double scale, double expected) {
+  ++inputs;
+  const double error = lobe_abs_error(out, scale, expected);
+  if (!(error <= max_abs_error))
+    max_abs_error = std::isnan(error) ? INFINITY : error, worst_abs_input = t;
+  if (expected >= 0.6) {
+    const double ulps = ulp_error(out, scale * expected);
+    if (!(ulps <= max_epicenter_ulp))
+      max_epicenter_ulp = std::isnan(ulps) ? INFINITY : ulps, worst_ulp_input = t;
+  }
+  if (out < min_output) min_output = out, min_output_input = t;
+  if (out > max_output) max_output = out, max_output_input = t;
 }
 
-}  // namespace
+void LobeErrors::merge(const LobeErrors& from) {
+  if (from.max_abs_error > max_abs_error)
+    max_abs_error = from.max_abs_error, worst_abs_input = from.worst_abs_input;
+  if (from.max_epicenter_ulp > max_epicenter_ulp)
+    max_epicenter_ulp = from.max_epicenter_ulp, worst_ulp_input = from.worst_ulp_input;
+  if (from.min_output < min_output)
+    min_output = from.min_output, min_output_input = from.min_output_input;
+  if (from.max_output > max_output)
+    max_output = from.max_output, max_output_input = from.max_output_input;
+  inputs += from.inputs;
+}
 
-std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, std::uint32_t stride, unsigned threads) {
+double epicenter_edge(const Lobe& lobe) {
+  const double x = std::acos(std::pow(0.6, 1.0 / lobe.k())) / lobe.c();  // F(x) = 0.6
+  return x >= ref::pi / 2 ? 0.0 : std::cos(x);
+}
+
+std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep, unsigned threads) {
   const ref::KutlogLobe reference(lobe.n(), lobe.k(), lobe.Q());
   // The reference is 0 at and below the cut: t <= max(cos(gran), 0).
   const double cut = lobe.cutoff_angle() >= ref::pi / 2 ? 0.0 : std::cos(lobe.cutoff_angle());
   const std::uint32_t cut_key = order_key(float(cut)), zero_key = order_key(0.0f);
   const std::uint32_t first_key = order_key(-1.0f), last_key = order_key(1.0f);
+  // The first float of the epicenter (rounded down: a float more costs nothing).
+  const std::uint32_t epicenter_key =
+      std::max(cut_key + 1, order_key(std::nextafter(float(epicenter_edge(lobe)), -1.0f)));
   constexpr std::uint32_t kBoundary = 1 << 16, kBelowCutStride = 61;
   // Segments of order keys [first, last] sampled every `step`.
   struct Segment {
     std::uint32_t first, last, step;
   };
-  std::vector<Segment> segments = {
-      {first_key, cut_key, kBelowCutStride * stride},
+  const std::vector<Segment> segments = {
+      {first_key, cut_key, kBelowCutStride * sweep.support_stride},
       {cut_key - std::min(kBoundary, cut_key - first_key), cut_key, 1},
       {std::max(zero_key, first_key + kBoundary) - kBoundary, std::min(zero_key + kBoundary, cut_key), 1},
-      {cut_key + 1, last_key, stride}};
+      {cut_key + 1, epicenter_key - 1, sweep.support_stride},
+      {epicenter_key, last_key, sweep.epicenter_stride}};
   // Tasks of up to 2^16 samples each.
   constexpr std::uint64_t kSamples = 1 << 16;
-  struct Task {
-    std::uint32_t first, last, step;
-  };
-  std::vector<Task> tasks;
+  std::vector<Segment> tasks;
   for (const Segment& segment : segments)
     for (std::uint64_t key = segment.first; segment.first <= segment.last && key <= segment.last;
          key += kSamples * segment.step)
@@ -53,7 +74,7 @@ std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, std::uint32_t stride, u
   std::array<LobeErrors, 4> total{};
   std::mutex total_mutex;
   parallel_for(tasks.size(), threads, [&](std::uint64_t index, unsigned) {
-    const Task& task = tasks[index];
+    const Segment& task = tasks[index];
     thread_local std::vector<float> t, out;
     thread_local std::vector<double> expected;
     t.clear();
@@ -68,23 +89,14 @@ std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, std::uint32_t stride, u
     for (Variant variant : kLobeVariants)
       for (Normalization normalization : kLobeNormalizations) {
         LobeErrors& errors = local[kernel_index++];
-        const double scale = normalization == Normalization::exact_coef ? lobe.coef_exact() : 1.0;
+        const bool normalized = normalization == Normalization::exact_coef;
+        if (normalized && !(lobe.coef_exact() <= std::numeric_limits<float>::max())) continue;
+        const double scale = normalized ? lobe.coef_exact() : 1.0;
         lobe.eval(t.data(), out.data(), t.size(), variant, normalization);
-        for (std::size_t i = 0; i < t.size(); ++i) {
-          const double error = lobe_abs_error(out[i], scale, expected[i]);
-          if (!(error <= errors.max_abs_error))  // NaN counts as the worst
-            errors.max_abs_error = std::isnan(error) ? INFINITY : error,
-            errors.worst_abs_input = t[i];
-          if (expected[i] >= 0.6) {
-            const double ulps = epicenter_ulps(error, expected[i]);
-            if (ulps > errors.max_epicenter_ulp)
-              errors.max_epicenter_ulp = ulps, errors.worst_ulp_input = t[i];
-          }
-        }
-        errors.inputs += t.size();
+        for (std::size_t i = 0; i < t.size(); ++i) errors.add(t[i], out[i], scale, expected[i]);
       }
     const std::lock_guard lock(total_mutex);
-    for (int i = 0; i < 4; ++i) merge(total[i], local[i]);
+    for (int i = 0; i < 4; ++i) total[i].merge(local[i]);
   });
   return total;
 }

@@ -11,23 +11,28 @@
 
 namespace kutlog::tools {
 
-// Normalized results are measured relative to coef: e = |out / scale - F| (scale = coef when
-// normalized, else 1).
+// Errors of the value returned, out, against the exact scale * F (scale = coef when
+// normalized, else 1): kutlog/accuracy.hpp's units.
 struct LobeErrors {
-  double max_abs_error = 0;      // e
-  double max_epicenter_ulp = 0;  // e in ulps of F (float), where F >= 0.6
+  double max_abs_error = 0;      // |out - scale F| / scale: relative to the peak
+  double max_epicenter_ulp = 0;  // |out - scale F| in ulps of the float scale F, where F >= 0.6
   float worst_abs_input = std::numeric_limits<float>::quiet_NaN();
   float worst_ulp_input = std::numeric_limits<float>::quiet_NaN();
+  // The hard contract 0 <= out <= peak (the output at t = 1), over every non-NaN output.
+  float min_output = std::numeric_limits<float>::infinity();
+  float max_output = -std::numeric_limits<float>::infinity();
+  float min_output_input = std::numeric_limits<float>::quiet_NaN();
+  float max_output_input = std::numeric_limits<float>::quiet_NaN();
   std::uint64_t inputs = 0;
+
+  // Records one output; NaN errors count as the worst.
+  void add(float t, float out, double scale, double expected);
+  void merge(const LobeErrors& other);
 };
 
-// One output of a lobe kernel against the reference F: |out / scale - F|, and that error in ulps
-// of the float F (its binade's ulp), the unit of the epicenter bound. NaN errors stay NaN.
+// |out - scale F| / scale, the error relative to the peak. NaN stays NaN.
 inline double lobe_abs_error(float out, double scale, double expected) {
-  return std::fabs(double(out) / scale - expected);
-}
-inline double epicenter_ulps(double abs_error, double expected) {
-  return abs_error / std::ldexp(1.0, std::ilogb(expected) - 23);
+  return std::fabs(double(out) - scale * expected) / scale;
 }
 
 // The kernels in the order variant x normalization: precise, precise * coef, fast, fast * coef.
@@ -35,12 +40,23 @@ inline constexpr Variant kLobeVariants[] = {Variant::precise, Variant::fast};
 inline constexpr Normalization kLobeNormalizations[] = {Normalization::none,
                                                         Normalization::exact_coef};
 
-// The floats t in [-1, 1] through lobe.eval on the active arch, against the reference
-// (computed once, for the four kernels): every `stride`-th float of the support (t above the
-// cut; stride 1: every float), and below it, where the reference is 0 and the kernels decide
-// by one comparison, every (61 stride)-th float plus every float within 2^16 of the cut and of
-// 0. There the kernels must give exactly 0.
-std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, std::uint32_t stride = 1,
+// Which floats t a sweep takes: every `support_stride`-th float of the support (t above the
+// cut) outside the epicenter, every `epicenter_stride`-th inside it (F >= 0.6); 1: every float.
+// Below the cut, where the reference is 0 and the kernels decide by one comparison: every
+// (61 support_stride)-th float plus every float within 2^16 of the cut and of 0. There the
+// kernels must give exactly 0.
+struct LobeSweep {
+  std::uint32_t support_stride = 1, epicenter_stride = 1;
+};
+
+// The floats of the sweep through lobe.eval on the active arch, against the reference
+// (computed once, for the four kernels). Normalized kernels are left out (errors with no
+// inputs) for a lobe whose coef exceeds FLT_MAX, which they reject.
+std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep = {},
                                        unsigned threads = 0);
+
+// The float t where the reference lobe falls to 0.6, the epicenter's edge (0 when it is
+// beyond the horizon).
+double epicenter_edge(const Lobe& lobe);
 
 }  // namespace kutlog::tools
