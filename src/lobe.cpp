@@ -143,17 +143,29 @@ double ulp_of_float(double value) {
   return std::ldexp(1.0, exponent - 23);
 }
 
+// The error |out - exact| of the kernel's output at t, for the arithmetic that will run it.
+// The scalar path is compiled with the caller's flags, whose contraction (FMA) moves its double
+// value by about 2^-52 relative and can flip its one rounding: its error is taken as that of
+// the double value plus the half ulp of the rounding, which no flag can exceed.
+double output_error(const LobeKernel& kernel, Arithmetic arithmetic, float t, double exact) {
+  if (arithmetic != Arithmetic::scalar)
+    return std::fabs(double(detail::simulate_lobe_kernel(kernel, arithmetic == Arithmetic::fused, t)) - exact);
+  if (!(t > kernel.t_cut)) return std::fabs(exact);
+  const double value = kernel.unrounded(t);
+  return std::fabs(value - exact) + 0.5 * ulp_of_float(value) + 0x1p-50 * std::fabs(value);
+}
+
 // The bounds are on the value returned: |out - scale F| relative to the scale (coef when
 // normalized) everywhere, and in ulps of the float scale F where F >= 0.6.
 bool meets(const CheckPoints& check, const Target& target, double scale, const LobeKernel& kernel,
-           bool fused) {
+           Arithmetic arithmetic) {
   const double epicenter_ulp = check.every_epicenter_float ? target.max_epicenter_ulp_every_float
                                                            : target.max_epicenter_ulp;
   const double abs_error = check.every_support_float ? target.max_abs_error_every_float
                                                      : target.max_abs_error;
   for (const CheckPoint& point : check.points) {
     const double exact = scale * point.reference;
-    const double error = std::fabs(double(detail::simulate_lobe_kernel(kernel, fused, point.t)) - exact);
+    const double error = output_error(kernel, arithmetic, point.t, exact);
     if (!(error <= abs_error * scale)) return false;
     if (point.reference >= 0.6 && error > epicenter_ulp * ulp_of_float(exact)) return false;
   }
@@ -179,7 +191,7 @@ float clamp_zero_to(float value, float peak) {
 }
 
 template <bool kFused>
-float simulate_float_polynomial(const LobeKernel& kernel, float t) {
+float simulate_polynomial(const LobeKernel& kernel, float t) {
   const float clamped = std::isnan(t) ? t : std::min(1.0f, t);
   const float w = 1.0f - clamped, s = kernel.center_t - clamped;
   float q = kernel.q_f[kernel.degree];
@@ -189,7 +201,7 @@ float simulate_float_polynomial(const LobeKernel& kernel, float t) {
 }
 
 template <bool kFused>
-float simulate_double_base_power(const LobeKernel& kernel, float t) {
+float simulate_base_power(const LobeKernel& kernel, float t) {
   const double w = std::isnan(t) ? double(t) : std::max(0.0, 1.0 - double(t));
   double q = kernel.q_d[kernel.degree];
   for (int i = kernel.degree; i-- > 0;) q = simulated_mul_add<kFused>(q, w, kernel.q_d[i]);
@@ -202,18 +214,19 @@ float simulate_double_base_power(const LobeKernel& kernel, float t) {
 }  // namespace
 
 float detail::simulate_lobe_kernel(const LobeKernel& kernel, bool fused, float t) {
-  if (kernel.form == LobeKernel::Form::float_polynomial)
-    return fused ? simulate_float_polynomial<true>(kernel, t)
-                 : simulate_float_polynomial<false>(kernel, t);
-  return fused ? simulate_double_base_power<true>(kernel, t)
-               : simulate_double_base_power<false>(kernel, t);
+  if (kernel.form == LobeKernel::Form::polynomial)
+    return fused ? simulate_polynomial<true>(kernel, t)
+                 : simulate_polynomial<false>(kernel, t);
+  return fused ? simulate_base_power<true>(kernel, t)
+               : simulate_base_power<false>(kernel, t);
 }
 
 namespace {
 
-// The kernel for one variant and one arithmetic (fused multiply-add or not).
+// The kernel for one variant and one arithmetic.
 LobeKernel fit_kernel(const ref::KutlogLobe& reference, const Shape& shape, double w_max,
-                      double scale, const CheckPoints& points, const Target& target, bool fused) {
+                      double scale, const CheckPoints& points, const Target& target,
+                      Arithmetic arithmetic) {
   LobeKernel kernel;
   // F = 0 for t <= cos(gran), and below the horizon (t <= 0) when gran > pi/2.
   const double cut = reference.cutoff_angle() >= kPi / 2 ? 0.0 : std::cos(reference.cutoff_angle());
@@ -225,7 +238,7 @@ LobeKernel fit_kernel(const ref::KutlogLobe& reference, const Shape& shape, doub
   // t >= 1 and 0 below, which q = 0 gives exactly. A fit there divides by the support's width
   // and overflows float (and 0 * inf at t = 1 is NaN).
   if (kernel.t_cut == std::nextafter(1.0f, 0.0f)) {
-    kernel.form = LobeKernel::Form::float_polynomial;
+    kernel.form = LobeKernel::Form::polynomial;
     kernel.degree = 0;
     return kernel;
   }
@@ -236,22 +249,25 @@ LobeKernel fit_kernel(const ref::KutlogLobe& reference, const Shape& shape, doub
   // cut-off (center_t ~ cos(gran)), if some degree meets the target: near the cut-off, where
   // 1 - w q cancels, s p(s) vanishes and only q's constant term is rounded; near t = 1 the
   // errors of q are multiplied by w, which is small there.
-  kernel.form = LobeKernel::Form::float_polynomial;
+  kernel.form = LobeKernel::Form::polynomial;
   kernel.center_t = float(1 - w_max);
   const Real center = 1 - Real(kernel.center_t);  // the center the float kernel really uses
   for (int degree = 1; degree <= 16; ++degree) {
     const std::vector<Real> q = detail::fit_monomials(q_of(shape.k), 0, w_max, center, degree);
     kernel.degree = degree;
-    for (int i = 0; i <= degree; ++i) kernel.q_f[i] = float(scale * q[i]);
-    if (meets(points, target, scale, kernel, fused)) return kernel;
+    for (int i = 0; i <= degree; ++i) {
+      kernel.q_d[i] = double(scale * q[i]);
+      kernel.q_f[i] = float(kernel.q_d[i]);
+    }
+    if (meets(points, target, scale, kernel, arithmetic)) return kernel;
   }
   // Otherwise B^k in double, B = cos(c theta) = 1 - w q(w), which converges for every lobe.
-  kernel.form = LobeKernel::Form::double_base_power;
+  kernel.form = LobeKernel::Form::base_power;
   for (int degree = 1; degree <= LobeKernel::kMaxDegree; ++degree) {
     const std::vector<Real> q = detail::fit_monomials(q_of(1), 0, w_max, 0, degree);
     kernel.degree = degree;
     for (int i = 0; i <= degree; ++i) kernel.q_d[i] = double(q[i]);
-    if (meets(points, target, scale, kernel, fused)) return kernel;
+    if (meets(points, target, scale, kernel, arithmetic)) return kernel;
   }
   // Not seen on any lobe tried (tests/test_lobe.cpp: the grid and random lobes); a kernel
   // that misses its bound is never kept.
@@ -275,12 +291,12 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
   coef_fits_float_ = coef_exact_ <= std::numeric_limits<float>::max();
   for (Variant variant : {Variant::precise, Variant::fast})
     for (Normalization normalization : {Normalization::none, Normalization::exact_coef})
-      for (bool fused : {true, false}) {
+      for (Arithmetic arithmetic : {Arithmetic::unfused, Arithmetic::fused, Arithmetic::scalar}) {
         if (normalization == Normalization::exact_coef && !coef_fits_float_) continue;
         const Target& target = variant == Variant::fast ? kFastTarget : kPreciseTarget;
-        kernels_[int(variant)][int(normalization)][fused] = fit_kernel(
+        kernels_[int(variant)][int(normalization)][int(arithmetic)] = fit_kernel(
             reference, shape, w_max, normalization == Normalization::exact_coef ? coef_exact_ : 1.0,
-            points, target, fused);
+            points, target, arithmetic);
       }
 }
 

@@ -106,7 +106,7 @@ int measure_lobes(const std::vector<kutlog::Arch>& archs, const std::vector<std:
         for (const std::string& n_text : n_list) {
           const double n = exponent_of(n_text, k);
           const kutlog::Lobe lobe(n, k, Q);  // validates
-          const auto errors = measure_lobe(lobe, {}, threads);
+          const auto errors = measure_lobe(lobe, {}, evaluate_array, threads);
           for (int i = 0; i < 4; ++i) {
             const std::string variant = i < 2 ? "precise" : "fast";
             if (std::find(variants.begin(), variants.end(), variant) == variants.end()) continue;

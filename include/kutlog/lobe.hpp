@@ -41,23 +41,48 @@ namespace kutlog {
 enum class Variant : std::uint8_t { precise, fast };
 enum class Normalization : std::uint8_t { none, exact_coef };
 
-// What a batch kernel needs of one lobe, precomputed: F(t) = scale * P(w), w = 1 - min(t, 1),
-// zero where t <= t_cut. Plain data, for kutlog/simd/lobe.hpp.
+// Where a kernel's arithmetic runs: SIMD lanes with fused multiply-add (AVX2, AVX-512) or
+// without (SSE4.1), or scalar double precision rounded once to float (Lobe::eval(float t)),
+// whose result no compiler flag (FMA, -ffp-contract) can move by more than its one rounding.
+enum class Arithmetic : std::uint8_t { unfused, fused, scalar };
+
+// What a kernel needs of one lobe, precomputed: F(t) = scale * P(w), w = 1 - min(t, 1), zero
+// where t <= t_cut. Plain data, for kutlog/simd/lobe.hpp and the scalar path below.
 struct LobeKernel {
   static constexpr int kMaxDegree = 24;
   enum class Form : std::uint8_t {
-    float_polynomial,   // P = 1 - w q(s), s = center_t - min(t, 1), q in float
-    double_base_power,  // P = (1 - w q(w))^k, q and the power in double lanes
+    polynomial,  // P = 1 - w q(s), s = center_t - min(t, 1); SIMD: q in float lanes
+    base_power,  // P = (1 - w q(w))^k; SIMD: q and the power in double lanes
   };
-  Form form = Form::float_polynomial;
+  Form form = Form::polynomial;
   int degree = 0;  // of q
-  int k = 1;       // the power, for double_base_power
+  int k = 1;       // the power, for base_power
   float t_cut = 0;
-  float center_t = 1;  // float form: q's powers are of center_t - t; center_t ~ cos(gran)
+  float center_t = 1;  // polynomial: q's powers are of center_t - t; center_t ~ cos(gran)
   float scale_f = 1;
   double scale_d = 1;
-  std::array<float, kMaxDegree + 1> q_f{};
-  std::array<double, kMaxDegree + 1> q_d{};
+  std::array<float, kMaxDegree + 1> q_f{};   // SIMD polynomial form, times scale
+  std::array<double, kMaxDegree + 1> q_d{};  // base_power form; scalar: both forms, times scale
+
+  // The scalar path, in double: the value before its one rounding to float. t > t_cut.
+  double unrounded(float t) const {
+    const double clamped = t < 1.0f ? double(t) : 1.0, w = 1.0 - clamped;
+    const double x = form == Form::polynomial ? double(center_t) - clamped : w;
+    double q = q_d[degree];
+    for (int i = degree; i-- > 0;) q = q * x + q_d[i];
+    if (form == Form::polynomial) return scale_d - w * q;
+    double base = 1.0 - w * q, power = 1.0;
+    for (int e = k; e > 0; e >>= 1, base *= base)
+      if (e & 1) power *= base;
+    return scale_d * power;
+  }
+  // F(t) by the scalar path: 0 at or below t_cut, NaN for NaN, else unrounded(t) rounded to
+  // float and clamped to [0, scale_f].
+  float evaluate(float t) const {
+    if (!(t > t_cut)) return t == t ? 0.0f : t;
+    const float value = float(unrounded(t));
+    return value < 0.0f ? 0.0f : value > scale_f ? scale_f : value;
+  }
 };
 
 class Lobe {
@@ -74,6 +99,13 @@ class Lobe {
   // 1 / (2 pi Int): coef * F conserves energy exactly.
   double coef_exact() const { return coef_exact_; }
 
+  // F(t), or coef_exact * F(t): one fragment, inline, no dispatch, no allocation. The same
+  // contract as the arrays', whatever the flags this is compiled with.
+  float eval(float t, Variant variant = Variant::precise,
+             Normalization normalization = Normalization::none) const {
+    return kernel(variant, normalization, Arithmetic::scalar).evaluate(t);
+  }
+
   // out[i] = F(t[i]), or coef_exact * F(t[i]).
   void eval(const float* t, float* out, std::size_t count, Variant variant = Variant::precise,
             Normalization normalization = Normalization::none) const;
@@ -83,8 +115,12 @@ class Lobe {
   // AVX-512: simd::has_fused_fma<Arch>) or without (SSE4.1).
   // Throws as eval does for Normalization::exact_coef when coef does not fit in a float.
   const LobeKernel& kernel(Variant variant, Normalization normalization, bool fused_fma) const {
+    return kernel(variant, normalization, fused_fma ? Arithmetic::fused : Arithmetic::unfused);
+  }
+  const LobeKernel& kernel(Variant variant, Normalization normalization,
+                           Arithmetic arithmetic) const {
     if (normalization == Normalization::exact_coef && !coef_fits_float_) throw_coef_overflow();
-    return kernels_[int(variant)][int(normalization)][fused_fma];
+    return kernels_[int(variant)][int(normalization)][int(arithmetic)];
   }
 
  private:
@@ -94,7 +130,7 @@ class Lobe {
   int k_;
   double c_, cutoff_angle_, coef_exact_;
   bool coef_fits_float_;
-  LobeKernel kernels_[2][2][2];  // variant, normalization, fused multiply-add
+  LobeKernel kernels_[2][2][3];  // variant, normalization, arithmetic
 };
 
 // What the per-lane kernel needs of one material, precomputed (kutlog/simd/lobe.hpp). With
@@ -107,6 +143,29 @@ struct PerLaneKernel {
   float n_min = 1, n_max = 1, y_center = 0, v_center = 0, v_cut = 0, t_guard = 0;
   int k = 1, h_degree = 0, k_degree = 0, g_degree = 0, r_degree = 0;
   Coefficients h{}, coef_k{}, g{}, r{};
+
+  // F(t; n), or coef(n) F(t; n), for one fragment in double precision, rounded once to float:
+  // the SIMD kernel's formulas (kutlog/simd/lobe.hpp), without its float roundings.
+  float evaluate(float t, float n, bool normalized) const {
+    if (t != t || n != n) return t + n;  // NaN
+    const double n_clamped = n < n_min ? n_min : n > n_max ? n_max : double(n);
+    const double y_offset = 1.0 / n_clamped - double(y_center);
+    const double w = t < 1.0f ? 1.0 - double(t) : 0.0;
+    const double v = n_clamped * horner(h, h_degree, y_offset) * (w * horner(g, g_degree, w));
+    if (t <= t_guard || v >= double(v_cut)) return 0.0f;
+    double base = 1.0 - v * horner(r, r_degree, v - double(v_center)), power = 1.0;
+    for (int e = k; e > 0; e >>= 1, base *= base)
+      if (e & 1) power *= base;
+    power = power < 0.0 ? 0.0 : power > 1.0 ? 1.0 : power;
+    return float(normalized ? power * (n_clamped * horner(coef_k, k_degree, y_offset)) : power);
+  }
+
+ private:
+  static double horner(const Coefficients& coefficients, int degree, double x) {
+    double result = coefficients[degree];
+    for (int i = degree; i-- > 0;) result = result * x + coefficients[i];
+    return result;
+  }
 };
 
 // A lobe whose exponent n varies per lane (a glossiness map), k and Q per material: c and the
@@ -126,9 +185,14 @@ class PerLaneLobe {
 
   int k() const { return k_; }
   double Q() const { return Q_; }
+  // F(t; n), or coef_exact(n) * F(t; n): one fragment, inline, no dispatch, no allocation,
+  // the same contract as the arrays'.
+  float eval(float t, float n, Normalization normalization = Normalization::none) const {
+    return kernel_.evaluate(t, n, normalization == Normalization::exact_coef);
+  }
   // out[i] = F(t[i]; n[i]), or coef_exact(n[i]) * F(t[i]; n[i]).
   void eval(const float* t, const float* n, float* out, std::size_t count,
-            Normalization normalization = Normalization::exact_coef) const;
+            Normalization normalization = Normalization::none) const;
   const PerLaneKernel& kernel() const { return kernel_; }
 
  private:

@@ -52,7 +52,7 @@ void kutlog_lobe_array_any(const LobeKernel& kernel, const float* t, float* out,
   static constexpr auto by_degree = []<int... degree>(std::integer_sequence<int, degree...>) {
     return std::array<LobeArrayKernel, sizeof...(degree)>{&kutlog_lobe_array<Arch, degree>...};
   }(std::make_integer_sequence<int, kMaxUnrolledDegree + 1>());
-  const bool unrolled = kernel.form == LobeKernel::Form::float_polynomial &&
+  const bool unrolled = kernel.form == LobeKernel::Form::polynomial &&
                         kernel.degree <= kMaxUnrolledDegree;
   (unrolled ? by_degree[kernel.degree] : &kutlog_lobe_array<Arch, -1>)(kernel, t, out, count);
 }

@@ -41,7 +41,13 @@ double epicenter_edge(const Lobe& lobe) {
   return x >= ref::pi / 2 ? 0.0 : std::cos(x);
 }
 
-std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep, unsigned threads) {
+void evaluate_array(const Lobe& lobe, Variant variant, Normalization normalization,
+                    const float* t, float* out, std::size_t count) {
+  lobe.eval(t, out, count, variant, normalization);
+}
+
+std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep, LobeEvaluator evaluate,
+                                       unsigned threads) {
   const ref::KutlogLobe reference(lobe.n(), lobe.k(), lobe.Q());
   // The reference is 0 at and below the cut: t <= max(cos(gran), 0).
   const double cut = lobe.cutoff_angle() >= ref::pi / 2 ? 0.0 : std::cos(lobe.cutoff_angle());
@@ -92,7 +98,7 @@ std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep, unsign
         const bool normalized = normalization == Normalization::exact_coef;
         if (normalized && !(lobe.coef_exact() <= std::numeric_limits<float>::max())) continue;
         const double scale = normalized ? lobe.coef_exact() : 1.0;
-        lobe.eval(t.data(), out.data(), t.size(), variant, normalization);
+        evaluate(lobe, variant, normalization, t.data(), out.data(), t.size());
         for (std::size_t i = 0; i < t.size(); ++i) errors.add(t[i], out[i], scale, expected[i]);
       }
     const std::lock_guard lock(total_mutex);

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 
@@ -49,10 +50,18 @@ struct LobeSweep {
   std::uint32_t support_stride = 1, epicenter_stride = 1;
 };
 
-// The floats of the sweep through lobe.eval on the active arch, against the reference
-// (computed once, for the four kernels). Normalized kernels are left out (errors with no
-// inputs) for a lobe whose coef exceeds FLT_MAX, which they reject.
+// How a lobe's kernel is called on `count` floats: the array functions (dispatched to the
+// active arch) or, in the tests, the scalar per-fragment eval compiled with the test's flags.
+using LobeEvaluator = void (*)(const Lobe& lobe, Variant variant, Normalization normalization,
+                               const float* t, float* out, std::size_t count);
+void evaluate_array(const Lobe& lobe, Variant variant, Normalization normalization,
+                    const float* t, float* out, std::size_t count);
+
+// The floats of the sweep through `evaluate`, against the reference (computed once, for the
+// four kernels). Normalized kernels are left out (errors with no inputs) for a lobe whose coef
+// exceeds FLT_MAX, which they reject.
 std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep = {},
+                                       LobeEvaluator evaluate = evaluate_array,
                                        unsigned threads = 0);
 
 // The float t where the reference lobe falls to 0.6, the epicenter's edge (0 when it is

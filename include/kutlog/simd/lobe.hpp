@@ -54,7 +54,7 @@ class PreparedLobe {
   // Within [0, scale]: the clamp costs two instructions and removes the rounding below 0
   // near the cut-off and above the peak that the polynomial alone would let through.
   F operator()(F t) const {
-    if (kernel_.form == LobeKernel::Form::float_polynomial)
+    if (kernel_.form == LobeKernel::Form::polynomial)
       return detail::clamp_zero_to(float_form(t), scale_);
     return xsimd::select(t <= t_cut_, F(0.0f), detail::clamp_zero_to(double_form(t), scale_));
   }

@@ -1,0 +1,174 @@
+// Accuracy and hard-contract assertions of the lobe kernels, shared by the array tests
+// (test_lobe.cpp, per arch) and the scalar ones (test_lobe_scalar.cpp, under several flags).
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "common/lobe_errors.hpp"
+#include "common/ulp.hpp"
+#include "kutlog/accuracy.hpp"
+#include "kutlog/lobe.hpp"
+#include "kutlog/reference.hpp"
+#include "lobe_case.hpp"
+
+namespace kutlog {
+
+inline std::vector<LobeCase> accuracy_grid() {
+  std::vector<LobeCase> grid;
+  for (int k = 1; k <= 5; ++k)
+    for (double Q : {0.1, 0.5, 0.9})
+      for (double n : {k + 1.0, 10.0, 100.0, 1000.0, 10000.0}) grid.push_back({n, k, Q});
+  return grid;
+}
+
+// Asserts kutlog/accuracy.hpp's bounds of the value returned and the hard contract
+// 0 <= out <= peak (1, or the float coef: the output at t = 1) for the four kernels of a lobe.
+inline void expect_within_bounds(const Lobe& lobe, const std::array<tools::LobeErrors, 4>& errors) {
+  const char* names[] = {"precise", "precise*coef", "fast", "fast*coef"};
+  for (int i = 0; i < 4; ++i) {
+    const LobeBound& bound = kLobeBounds[i < 2 ? 0 : 1];
+    const bool normalized = i % 2 == 1;
+    if (normalized && errors[i].inputs == 0) continue;  // coef > FLT_MAX: rejected, tested apart
+    SCOPED_TRACE(std::string(names[i]) + " n=" + std::to_string(lobe.n()) + " k=" +
+                 std::to_string(lobe.k()) + " Q=" + std::to_string(lobe.Q()));
+    const float peak = normalized ? float(lobe.coef_exact()) : 1.0f;
+    EXPECT_LE(errors[i].max_abs_error, bound.max_abs_error)
+        << "worst t = " << errors[i].worst_abs_input;
+    if (bound.max_epicenter_ulp > 0)
+      EXPECT_LE(errors[i].max_epicenter_ulp, bound.max_epicenter_ulp)
+          << "worst t = " << errors[i].worst_ulp_input;
+    EXPECT_GE(errors[i].min_output, 0.0f) << "at t = " << errors[i].min_output_input;
+    EXPECT_LE(errors[i].max_output, peak) << "at t = " << errors[i].max_output_input;
+  }
+}
+
+// Asserts the bounds for every lobe of the grid, every `stride`-th float.
+inline void expect_grid_within_bounds(std::uint32_t stride,
+                                      tools::LobeEvaluator evaluate = tools::evaluate_array) {
+  for (const LobeCase& c : accuracy_grid()) {
+    const Lobe lobe(c.n, c.k, c.Q);
+    expect_within_bounds(lobe, tools::measure_lobe(lobe, {stride, stride}, evaluate));
+  }
+}
+
+// Lobes off the grid, from a fixed seed: n log-uniform in [0.5, 10^6], one in four within 2 %
+// of k (n < k included), k uniform in 1..64, Q uniform in [0.01, 0.99].
+inline std::vector<LobeCase> random_lobes(int count, unsigned seed) {
+  std::mt19937 engine(seed);
+  std::uniform_real_distribution<double> log_n(std::log(0.5), std::log(1e6)), unit(0, 1);
+  std::uniform_int_distribution<int> k_of(1, 64);
+  std::vector<LobeCase> lobes;
+  for (int i = 0; i < count; ++i) {
+    const int k = k_of(engine);
+    const double n = i % 4 == 3 ? k * (0.98 + 0.04 * unit(engine)) : std::exp(log_n(engine));
+    lobes.push_back({n, k, 0.01 + 0.98 * unit(engine)});
+  }
+  return lobes;
+}
+
+// The strides that sample about `support_samples` floats of the support and
+// `epicenter_samples` of the epicenter (1: every float, where there are fewer).
+inline tools::LobeSweep dense_sweep(const Lobe& lobe, double support_samples, double epicenter_samples) {
+  const double cut = lobe.cutoff_angle() >= ref::pi / 2 ? 0.0 : std::cos(lobe.cutoff_angle());
+  const auto stride = [](double lo, double samples) {
+    const double floats = double(tools::order_key(1.0f) - tools::order_key(float(lo)));
+    return std::uint32_t(std::max(1.0, std::ceil(floats / samples)));
+  };
+  return {stride(cut, support_samples), stride(tools::epicenter_edge(lobe), epicenter_samples)};
+}
+
+// How a per-lane lobe is called: the array function or the scalar eval per lane.
+using PerLaneEvaluator = void (*)(const PerLaneLobe& lobe, Normalization normalization,
+                                  const float* t, const float* n, float* out, std::size_t count);
+inline void evaluate_per_lane_array(const PerLaneLobe& lobe, Normalization normalization,
+                                    const float* t, const float* n, float* out,
+                                    std::size_t count) {
+  lobe.eval(t, n, out, count, normalization);
+}
+
+// Per-lane materials: the grid k in 1..5, Q in {0.1, 0.5, 0.9}, n in [k + 1, 10^4], the
+// extremes of what PerLaneLobe accepts, then random ones over it: k uniform in 1..64; Q
+// uniform in [0.01, 0.99], or (one in five each) log-uniform in [10^-6, 0.01] or within
+// [5 10^-7, 0.01] of 1; n_min log-uniform in [k, 10^30], n_max up to 10^12 n_min and FLT_MAX.
+struct PerLaneCase {
+  int k;
+  double Q, n_min, n_max;
+};
+inline std::vector<PerLaneCase> per_lane_materials(int random_count, unsigned seed) {
+  std::vector<PerLaneCase> materials;
+  for (int k = 1; k <= 5; ++k)
+    for (double Q : {0.1, 0.5, 0.9}) materials.push_back({k, Q, k + 1.0, 10000});
+  for (const PerLaneCase& extreme :
+       {PerLaneCase{1, 1e-300, 1e3, 3.4e38}, PerLaneCase{64, 0x1.fffffffffffffp-1, 64, 1e20},
+        PerLaneCase{64, 1e-300, 64, 65}, PerLaneCase{2, 0.5, 2, 2}, PerLaneCase{17, 0.999999, 1e10, 1e22},
+        PerLaneCase{1, 0.5, 1, 3.4e38}})
+    materials.push_back(extreme);
+  std::mt19937 engine(seed);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::uniform_int_distribution<int> k_of(1, 64);
+  for (int i = 0; i < random_count; ++i) {
+    const int k = k_of(engine);
+    const double Q = i % 5 == 0   ? std::exp(std::log(1e-6) + unit(engine) * std::log(1e4))
+                     : i % 5 == 1 ? 1 - std::exp(std::log(5e-7) + unit(engine) * std::log(2e4))
+                                  : 0.01 + 0.98 * unit(engine);
+    const double n_min = k * std::exp(unit(engine) * std::log(1e30 / k));
+    const double n_max = std::min(3.4e38, n_min * std::exp(unit(engine) * std::log(1e12)));
+    materials.push_back({k, Q, n_min, n_max});
+  }
+  return materials;
+}
+
+// Random lanes of (t, n): n log-uniform in [n_min, n_max], t over each lane's lobe and a little
+// past its cut-off, a third in the epicenter, a third just inside the cut-off. Asserts the
+// bound relative to each lane's peak, the measured epicenter bound in ulps of the value
+// returned, and 0 <= out <= the lane's output at t = 1 (and <= 1 unnormalized).
+inline void expect_per_lane_within_bounds(const PerLaneCase& c, unsigned seed, std::size_t lanes,
+                                          PerLaneEvaluator evaluate = evaluate_per_lane_array) {
+  const LobeBound bound = kLobeBounds[2];
+  const PerLaneLobe lobe(c.k, c.Q, c.n_min, c.n_max);
+  std::mt19937 engine(seed);
+  std::uniform_real_distribution<double> log_n(std::log(c.n_min), std::log(c.n_max)), unit(0, 1);
+  std::vector<float> t(lanes), n(lanes), ones(lanes, 1.0f), out(lanes), peak(lanes);
+  std::vector<ref::KutlogLobe> references;
+  for (std::size_t i = 0; i < lanes; ++i) {
+    n[i] = std::clamp(float(std::exp(log_n(engine))), float(c.n_min), float(c.n_max));
+    references.emplace_back(n[i], c.k, c.Q);
+    const double epicenter = std::acos(std::pow(0.6, 1.0 / c.k)) / references.back().c();
+    const double cutoff = references.back().cutoff_angle();
+    const double x = i % 3 == 0   ? unit(engine) * epicenter
+                     : i % 3 == 1 ? unit(engine) * 1.2 * cutoff
+                                  : cutoff * (1 - 0x1p-12 * unit(engine));  // where F nears 0
+    t[i] = float(std::cos(std::min(x, ref::pi)));
+  }
+  for (Normalization normalization : {Normalization::none, Normalization::exact_coef}) {
+    SCOPED_TRACE("k=" + std::to_string(c.k) + " Q=" + std::to_string(c.Q) + " n in [" +
+                 std::to_string(c.n_min) + ", " + std::to_string(c.n_max) + "] " +
+                 (normalization == Normalization::none ? "F" : "coef*F"));
+    evaluate(lobe, normalization, t.data(), n.data(), out.data(), lanes);
+    evaluate(lobe, normalization, ones.data(), n.data(), peak.data(), lanes);
+    tools::LobeErrors errors;
+    std::size_t outside = 0, first_outside = 0;
+    for (std::size_t i = 0; i < lanes; ++i) {
+      const double scale = normalization == Normalization::none ? 1.0 : references[i].coef_exact();
+      errors.add(t[i], out[i], scale, references[i].eval(t[i]));
+      errors.add(1.0f, peak[i], scale, 1.0);  // the peak itself within the bound
+      if (normalization == Normalization::none) peak[i] = std::min(peak[i], 1.0f);
+      if (!(out[i] >= 0 && out[i] <= peak[i]) && outside++ == 0) first_outside = i;
+    }
+    EXPECT_LE(errors.max_abs_error, bound.max_abs_error) << "t = " << errors.worst_abs_input;
+    EXPECT_LE(errors.max_epicenter_ulp, bound.max_epicenter_ulp) << "t = " << errors.worst_ulp_input;
+    EXPECT_EQ(outside, 0u) << "e.g. t = " << t[first_outside] << ", n = " << n[first_outside]
+                           << ": " << out[first_outside] << " against the peak "
+                           << peak[first_outside];
+  }
+}
+
+}  // namespace kutlog

@@ -1,0 +1,81 @@
+// The per-fragment path, Lobe::eval(float t) and PerLaneLobe::eval(float t, float n), against
+// the same bounds and hard contract as the arrays. CMake builds this file twice: with the
+// compiler's default flags (kutlog-test-lobe-scalar) and with FMA and -ffp-contract=fast
+// (kutlog-test-lobe-scalar-fma), as a user might: the contract must hold under both.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "kutlog/dispatch.hpp"
+#include "lobe_accuracy.hpp"
+
+namespace kutlog {
+namespace {
+
+// Compiled here, with this binary's flags.
+void evaluate_scalar_here(const Lobe& lobe, Variant variant, Normalization normalization,
+                          const float* t, float* out, std::size_t count) {
+  for (std::size_t i = 0; i < count; ++i) out[i] = lobe.eval(t[i], variant, normalization);
+}
+void evaluate_per_lane_scalar_here(const PerLaneLobe& lobe, Normalization normalization,
+                                   const float* t, const float* n, float* out, std::size_t count) {
+  for (std::size_t i = 0; i < count; ++i) out[i] = lobe.eval(t[i], n[i], normalization);
+}
+
+TEST(LobeScalar, AccuracyGridEvery97thFloat) { expect_grid_within_bounds(97, evaluate_scalar_here); }
+
+TEST(LobeScalar, RandomLobesWithinBoundsAndBetweenZeroAndPeak) {
+  for (const LobeCase& c : random_lobes(12, 2026)) {
+    const Lobe lobe(c.n, c.k, c.Q);
+    expect_within_bounds(lobe, tools::measure_lobe(lobe, dense_sweep(lobe, 0x1p18, 0x1p21),
+                                                   evaluate_scalar_here));
+  }
+}
+
+TEST(LobeScalar, PerLaneMaterialsWithinBoundsAndBetweenZeroAndPeak) {
+  unsigned seed = 17;
+  for (const PerLaneCase& c : per_lane_materials(40, 2026))
+    expect_per_lane_within_bounds(c, seed++, 8192, evaluate_per_lane_scalar_here);
+}
+
+// The data rule, the same as the arrays': the peak at t >= 1, 0 at and below the cut and for
+// t <= 0, NaN for NaN; the scalar and the array path agree on each of these exactly.
+TEST(LobeScalar, DataRuleAsTheArrays) {
+  constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+  for (const LobeCase& c : {LobeCase{100, 3, 0.5}, LobeCase{3, 5, 0.2}, LobeCase{3e7, 1, 0.5}}) {
+    const Lobe lobe(c.n, c.k, c.Q);
+    const float cut = lobe.cutoff_angle() >= ref::pi / 2 ? 0.0f : float(std::cos(lobe.cutoff_angle()));
+    const std::vector<float> t = {1.0f, 1.0000001f, 2.0f, INFINITY, std::nextafter(cut, -1.0f),
+                                  -0.0f, -0.5f, -1.0f, -INFINITY, kNaN};
+    for (Variant variant : tools::kLobeVariants)
+      for (Normalization normalization : tools::kLobeNormalizations) {
+        const float peak = normalization == Normalization::none ? 1.0f : float(lobe.coef_exact());
+        for (int i = 0; i < 4; ++i) EXPECT_EQ(lobe.eval(t[i], variant, normalization), peak);
+        for (std::size_t i = 4; i + 1 < t.size(); ++i)
+          EXPECT_EQ(lobe.eval(t[i], variant, normalization), 0.0f) << "t = " << t[i];
+        EXPECT_TRUE(std::isnan(lobe.eval(kNaN, variant, normalization)));
+      }
+  }
+  const PerLaneLobe per_lane(3, 0.5, 10, 1000);
+  EXPECT_EQ(per_lane.eval(1.5f, 100.0f), 1.0f);
+  EXPECT_EQ(per_lane.eval(-0.2f, 100.0f), 0.0f);
+  EXPECT_TRUE(std::isnan(per_lane.eval(kNaN, 100.0f)));
+  EXPECT_TRUE(std::isnan(per_lane.eval(0.999f, kNaN)));
+  EXPECT_TRUE(std::isnan(per_lane.eval(-1.0f, kNaN)));
+  EXPECT_EQ(per_lane.eval(0.999f, 1e6f), per_lane.eval(0.999f, 1000.0f));  // clamped to n_max
+}
+
+// Every float of [-1, 1] on the grid, and random lobes densely (labelled `exhaustive`).
+TEST(LobeScalarExhaustive, AccuracyGridEveryFloat) { expect_grid_within_bounds(1, evaluate_scalar_here); }
+TEST(LobeScalarExhaustive, RandomLobesDensely) {
+  for (const LobeCase& c : random_lobes(24, 2027)) {
+    const Lobe lobe(c.n, c.k, c.Q);
+    expect_within_bounds(lobe, tools::measure_lobe(lobe, dense_sweep(lobe, 0x1p21, 0x1p24),
+                                                   evaluate_scalar_here));
+  }
+}
+
+}  // namespace
+}  // namespace kutlog
