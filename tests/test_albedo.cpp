@@ -13,11 +13,12 @@ namespace {
 
 // The accuracy of the albedos, measured over this grid and these angles against the same
 // integrals at tolerances 1e-15 (Phong, split at its kink alpha = pi/2 - theta_i) and 1e-14
-// (Blinn, both levels): albedo_phong is within 1.7e-12 of it, albedo_blinn within 1.2e-8 (its
-// two nested quadratures run at 1e-10, and 1/cos(theta_i) multiplies their error by up to 57
-// at 89 degrees); where the Blinn albedo is within 1e-6 of 1, within 5e-11. The white
-// furnace allows these errors with a margin of about 5, and no more: a coef 1e-6 too large
-// fails it (at normal incidence, where both albedos are 1 for a lobe narrower than 30 degrees).
+// (Blinn, both levels): albedo_phong is within 1.7e-12 of it (worst at 89 degrees),
+// albedo_blinn within 1.2e-8 (its two nested quadratures run at 1e-10, and the outer
+// integrand carries the inner one's error); where the Blinn albedo is within 1e-6 of 1, within
+// 5e-11. The white furnace allows these errors with a margin of about 5, and no more: a coef
+// 1e-6 too large fails it (at normal incidence, where both albedos are 1 for a lobe narrower
+// than 30 degrees).
 constexpr double kPhongAlbedoAccuracy = 1e-11;
 constexpr double kBlinnAlbedoAccuracy = 5e-8;
 // At normal incidence the Phong albedo is the integral coef_exact normalizes: 1 up to the
