@@ -11,6 +11,21 @@
 namespace kutlog::ref {
 namespace {
 
+// The accuracy of the albedos, measured over this grid and these angles against the same
+// integrals at tolerances 1e-15 (Phong, split at its kink alpha = pi/2 - theta_i) and 1e-14
+// (Blinn, both levels): albedo_phong is within 1.7e-12 of it (worst at 89 degrees),
+// albedo_blinn within 1.2e-8 (its two nested quadratures run at 1e-10, and the outer
+// integrand carries the inner one's error); where the Blinn albedo is within 1e-6 of 1, within
+// 5e-11. The white furnace allows these errors with a margin of about 5, and no more: a coef
+// 1e-6 too large fails it (at normal incidence, where both albedos are 1 for a lobe narrower
+// than 30 degrees).
+constexpr double kPhongAlbedoAccuracy = 1e-11;
+constexpr double kBlinnAlbedoAccuracy = 5e-8;
+// At normal incidence the Phong albedo is the integral coef_exact normalizes: 1 up to the
+// quadrature's tolerance (1e-13, kutlog/reference.hpp) and the closed form's 1e-15. Measured:
+// 1.4e-15.
+constexpr double kNormalIncidenceAccuracy = 1e-13 + 1e-15;
+
 class WhiteFurnace : public testing::TestWithParam<LobeCase> {};
 
 TEST_P(WhiteFurnace, ExactCoefReflectsAtMostWhatArrives) {
@@ -18,8 +33,10 @@ TEST_P(WhiteFurnace, ExactCoefReflectsAtMostWhatArrives) {
   const KutlogLobe lobe(n, k, Q);
   for (double degrees : {0.0, 15.0, 30.0, 45.0, 60.0, 75.0, 85.0, 89.0}) {
     const double theta_i = degrees * pi / 180;
-    EXPECT_LE(albedo_phong(lobe, lobe.coef_exact(), theta_i), 1 + 1e-3) << degrees;
-    EXPECT_LE(albedo_blinn(lobe, lobe.coef_exact(), theta_i), 1 + 1e-3) << degrees;
+    EXPECT_LE(albedo_phong(lobe, lobe.coef_exact(), theta_i), 1 + kPhongAlbedoAccuracy)
+        << degrees;
+    EXPECT_LE(albedo_blinn(lobe, lobe.coef_exact(), theta_i), 1 + kBlinnAlbedoAccuracy)
+        << degrees;
   }
 }
 
@@ -28,8 +45,9 @@ TEST_P(WhiteFurnace, NormalIncidenceRecoversTheDefiningIntegral) {
   const KutlogLobe lobe(n, k, Q);
   // Phong at normal incidence is the integral coef normalizes: 1 exactly, and for the fitted
   // coef its energy (the article's Table 2 measure).
-  EXPECT_NEAR(albedo_phong(lobe, lobe.coef_exact(), 0), 1, 1e-9);
-  EXPECT_NEAR(albedo_phong(lobe, lobe.coef_fit(), 0), lobe.energy(lobe.coef_fit()), 1e-9);
+  EXPECT_NEAR(albedo_phong(lobe, lobe.coef_exact(), 0), 1, kNormalIncidenceAccuracy);
+  EXPECT_NEAR(albedo_phong(lobe, lobe.coef_fit(), 0), lobe.energy(lobe.coef_fit()),
+              2 * kNormalIncidenceAccuracy * lobe.energy(lobe.coef_fit()));
 }
 
 std::vector<LobeCase> furnace_grid() {

@@ -142,15 +142,39 @@ TEST(Lobe, NEqualsKIsThePlainCosinePowerWithLafortuneWillemsCoef) {
     }
 }
 
-TEST(Lobe, FreeFunctionsAgreeWithTheLobe) {
-  const KutlogLobe lobe(50, 5, 0.5);
-  EXPECT_EQ(kutlog_c(50, 5, 0.5), lobe.c());
-  EXPECT_EQ(cutoff_angle(50, 5, 0.5), lobe.cutoff_angle());
-  EXPECT_EQ(kutlog(0.99, 50, 5, 0.5), lobe.eval(0.99));
-  EXPECT_EQ(kutlog_angle(0.1, 50, 5, 0.5), lobe.eval_angle(0.1));
-  EXPECT_EQ(kutlog_integral(50, 5, 0.5), lobe.integral());
-  EXPECT_EQ(coef_exact(50, 5, 0.5), lobe.coef_exact());
-  EXPECT_EQ(coef_fit(50, 5, 0.5), lobe.coef_fit());
+// The free functions against the article's formulas written out here (not through
+// KutlogLobe): c, the cut-off angle (c gran = pi/2 is the definition of gran; no other test
+// pins the cut-off: a shorter one moves the closed form's and the quadrature's limit alike),
+// the lobe in both forms, and Int by quadrature of the integrand written here.
+TEST(Lobe, FreeFunctionsMatchTheArticlesFormulas) {
+  for (const LobeCase& p : {LobeCase{50, 5, 0.5}, LobeCase{7, 2, 0.1}, LobeCase{1000, 1, 0.9}}) {
+    const auto [n, k, Q] = p;
+    SCOPED_TRACE("n=" + std::to_string(n) + " k=" + std::to_string(k) + " Q=" + std::to_string(Q));
+    // Naive acos(Q^(1/n)): 1 - Q^(1/n) >= 1e-4 here, so it loses at most 1e4 ulp of the root,
+    // half that relative in the angle: 1.2e-12.
+    const double c = std::acos(std::pow(Q, 1 / double(k))) / std::acos(std::pow(Q, 1 / n));
+    EXPECT_NEAR(kutlog_c(n, k, Q), c, 2e-12 * c);
+    // gran = pi / (2c): one division and c's few ulp.
+    EXPECT_NEAR(cutoff_angle(n, k, Q) * kutlog_c(n, k, Q), pi / 2, 4 * 0x1p-53 * pi / 2);
+    for (int i = 0; i <= 64; ++i) {
+      const double x = cutoff_angle(n, k, Q) * i / 64;
+      // cos^k(cx): c's error 2e-12 moves the argument by 2e-12 cx, the lobe by k tan(cx) times
+      // that; near the cut-off cos^k is below 1e-3 and its error absolute.
+      const double expected = i == 64 ? 0.0 : std::pow(std::cos(c * x), k);
+      EXPECT_NEAR(kutlog_angle(x, n, k, Q), expected, 1e-10) << "x=" << x;
+      // The cosine form: acos(cos x) returns x to within ulp(1)/sin(x) (acos's condition).
+      if (i > 0 && i < 64)
+        EXPECT_NEAR(kutlog(std::cos(x), n, k, Q), expected, 1e-10) << "x=" << x;
+    }
+    // Int: the integrand written here, integrated to 1e-14; the closed form is good to 1e-15.
+    const double integral = integrate(
+        [&](double theta) {
+          return std::pow(std::cos(c * theta), k) * std::cos(theta) * std::sin(theta);
+        },
+        0, pi / (2 * c), 1e-14);
+    EXPECT_NEAR(kutlog_integral(n, k, Q), integral, 2e-12 * integral);  // c's error, times 2
+    EXPECT_NEAR(coef_exact(n, k, Q) * 2 * pi * kutlog_integral(n, k, Q), 1, 8 * 0x1p-53);
+  }
 }
 
 TEST(AcosOfRoot, AgreesWithTheNaiveFormWhereThatIsAccurate) {

@@ -22,11 +22,11 @@ Table table1(bool with_difference) {
   Table table(header);
   for (std::size_t q = 0; q < article::kTableQ.size(); ++q)
     for (std::size_t j = 0; j < article::kTableK.size(); ++j) {
-      const double Q = article::kTableQ[q], paper = article::kTable1DeltaPercent[q][j];
+      const double Q = article::kTableQ[q], paper = article::table1_printed(q, j).value;
       const int k = article::kTableK[j];
       const double ours = article::table1_delta_percent(Q, k);
       std::vector<std::string> row{cell("%.1f", Q), cell("%d", k), cell("%.3f", ours),
-                                   cell("%g", paper)};
+                                   std::string(article::kTable1DeltaPercent[q][j])};
       if (with_difference) row.push_back(cell("%+.3f", ours - paper));
       table.add_row(row);
     }
@@ -40,7 +40,7 @@ Table table2(bool with_difference) {
   Table table(header);
   for (std::size_t q = 0; q < article::kTableQ.size(); ++q)
     for (std::size_t j = 0; j < article::kTableK.size(); ++j) {
-      const double Q = article::kTableQ[q], paper = article::kTable2Delta[q][j];
+      const double Q = article::kTableQ[q], paper = article::table2_printed(q, j).value;
       const int k = article::kTableK[j];
       const article::EnergyErrors ours = article::table2_energy_errors(Q, k);
       std::vector<std::string> row{cell("%.1f", Q), cell("%d", k), cell("%.5f", ours.fit),

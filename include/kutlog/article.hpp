@@ -6,6 +6,8 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
+#include <string_view>
 
 namespace kutlog::article {
 
@@ -15,19 +17,57 @@ inline constexpr std::array<int, 5> kTableK = {1, 2, 3, 4, 5};
 // Both tables take their maximum over every integer n in [k + 1, kTableMaxN].
 inline constexpr int kTableMaxN = 1000;
 
-// Table 1: delta (%), the maximal relative error of F_kutlog against F_B in the epicenter zone.
-inline constexpr double kTable1DeltaPercent[9][5] = {
-    {27, 15, 10, 7, 6},      {19, 10, 6, 5, 4},       {13, 6, 4, 3, 2},
-    {8, 4, 2, 2, 1.5},       {4, 2, 1.5, 1, 0.8},     {3, 1, 0.7, 0.5, 0.4},
-    {5, 1.5, 0.8, 0.6, 0.5}, {7, 2.5, 1.5, 1, 0.9},   {9.5, 3.5, 2.5, 1.7, 1.3}};
+// A number as the article prints it: its value and half a unit of its last printed digit,
+// so that a measurement m agrees with it at the printed precision iff |m - value| <= half_unit.
+struct Printed {
+  double value;
+  double half_unit;
+};
+// `text` is the printed decimal ("27", "1.5"); the number is text * 10^-scale_digits (Table 2
+// prints "42" meaning 42 * 10^-3). The value is the integer of the digits divided by a power of
+// ten, both exact, in one correct rounding: the same double as the literal.
+constexpr Printed parse_printed(std::string_view text, int scale_digits = 0) {
+  long long digits = 0;
+  int decimals = scale_digits;
+  bool after_point = false;
+  for (const char ch : text) {
+    if (ch == '.') {
+      after_point = true;
+      continue;
+    }
+    digits = 10 * digits + (ch - '0');
+    if (after_point) ++decimals;
+  }
+  double unit = 1;
+  for (int i = 0; i < decimals; ++i) unit *= 10;
+  return {double(digits) / unit, 0.5 / unit};
+}
 
-// Table 2: Delta, the maximal |coef_fit * 2*pi*Int - 1| (printed in units of 1e-3).
-inline constexpr double kTable2Delta[9][5] = {
-    {42e-3, 49e-3, 49e-3, 43e-3, 38e-3}, {31e-3, 21e-3, 21e-3, 21e-3, 15e-3},
-    {47e-3, 17e-3, 10e-3, 10e-3, 10e-3}, {67e-3, 47e-3, 38e-3, 35e-3, 30e-3},
-    {42e-3, 16e-3, 11e-3, 11e-3, 11e-3}, {46e-3, 23e-3, 17e-3, 13e-3, 13e-3},
-    {65e-3, 35e-3, 24e-3, 21e-3, 16e-3}, {78e-3, 46e-3, 35e-3, 29e-3, 23e-3},
-    {91e-3, 60e-3, 44e-3, 33e-3, 28e-3}};
+// Table 1: delta (%), the maximal relative error of F_kutlog against F_B in the epicenter zone,
+// as printed (to one or two significant digits; the printed precision differs by cell).
+inline constexpr std::string_view kTable1DeltaPercent[9][5] = {
+    {"27", "15", "10", "7", "6"},         {"19", "10", "6", "5", "4"},
+    {"13", "6", "4", "3", "2"},           {"8", "4", "2", "2", "1.5"},
+    {"4", "2", "1.5", "1", "0.8"},        {"3", "1", "0.7", "0.5", "0.4"},
+    {"5", "1.5", "0.8", "0.6", "0.5"},    {"7", "2.5", "1.5", "1", "0.9"},
+    {"9.5", "3.5", "2.5", "1.7", "1.3"}};
+
+// Table 2: Delta, the maximal |coef_fit * 2*pi*Int - 1|, as printed: in units of 1e-3
+// ("42" is 42 * 10^-3, printed to that unit).
+inline constexpr int kTable2ScaleDigits = 3;
+inline constexpr std::string_view kTable2Delta[9][5] = {
+    {"42", "49", "49", "43", "38"}, {"31", "21", "21", "21", "15"},
+    {"47", "17", "10", "10", "10"}, {"67", "47", "38", "35", "30"},
+    {"42", "16", "11", "11", "11"}, {"46", "23", "17", "13", "13"},
+    {"65", "35", "24", "21", "16"}, {"78", "46", "35", "29", "23"},
+    {"91", "60", "44", "33", "28"}};
+
+inline constexpr Printed table1_printed(std::size_t row, std::size_t column) {
+  return parse_printed(kTable1DeltaPercent[row][column]);
+}
+inline constexpr Printed table2_printed(std::size_t row, std::size_t column) {
+  return parse_printed(kTable2Delta[row][column], kTable2ScaleDigits);
+}
 
 // Figure 4: the coef(n, k, Q) samples the fit was trained on, as printed (3 decimals, a
 // trailing zero dropped). One entry is misprinted: Q = 0.5, k = 1, n = 2 is printed 0.699,

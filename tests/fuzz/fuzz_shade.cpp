@@ -8,6 +8,7 @@
 #include <limits>
 #include <string>
 
+#include "cosine_error.hpp"
 #include "fuzz_support.hpp"
 #include "kutlog/shade.hpp"
 
@@ -15,9 +16,12 @@ namespace kutlog::fuzz {
 namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-// How far the kernels' float cosines may be from the double ones of the same unit vectors: a
-// few roundings of values up to 2 (generous: the lobe's own bound is added on top).
-constexpr double kCosineError = 0x1p-19, kNDotLError = 0x1p-20;
+// How far the kernels' float cosines may be from the double ones of the same unit vectors:
+// derived in tests/cosine_error.hpp (Blinn 9u, Phong 18.5u, N.L 3.5u, u = 2^-24), which
+// tests/test_shade.cpp uses too.
+using test::kBlinnCosineError;
+using test::kNDotLError;
+using test::kPhongCosineError;
 // Unit vectors in float are unit within a few roundings; others have no contract but NaN's.
 constexpr double kUnitTolerance = 0x1p-20;
 
@@ -110,9 +114,10 @@ void check_vectors(const Call& call, std::size_t i, const LobeUnderTest& lobe,
   const auto range_over = [&](double t_lo, double t_hi) {
     return lobe_range(lobe, options.variant, options.normalization, t_lo, t_hi);
   };
+  const double dt = blinn ? kBlinnCosineError : kPhongCosineError;
   const Range range = opposite          ? range_over(0, 0)
                       : nearly_opposite ? range_over(-1, 2)
-                                        : range_over(t - kCosineError, t + kCosineError);
+                                        : range_over(t - dt, t + dt);
   const double factor_lo = std::max(0.0, n_dot_l - kNDotLError);
   const double factor_hi = std::max(0.0, n_dot_l + kNDotLError);
   if (!product_within(out, range, factor_lo, factor_hi))
