@@ -1,6 +1,7 @@
 // Benchmarks of the shading lobes, named with the tokens the ratio report reads:
 // lobe/<kernel>/n:<n>/k:<k>/arch:<arch>, kernel in kutlog_precise, kutlog_fast,
-// kutlog_perlane, pow_xsimd, pow_precise, schlick, copy.
+// kutlog_perlane, pow_xsimd, pow_precise, schlick, copy; and the spans of a renderer,
+// span/<kernel>/n:1000/k:<k>/count:<count>/arch:<arch>.
 #pragma once
 
 #include <benchmark/benchmark.h>
@@ -18,6 +19,7 @@ namespace kutlog::bench {
 inline constexpr int kLobeExponents[] = {10, 100, 1000};
 inline constexpr int kLobePowers[] = {1, 3, 5};
 inline constexpr double kLobeAnchor = 0.5;
+inline constexpr std::size_t kSpanCounts[] = {1, 16, 157, 4096};
 
 // t = N.H over the lobe and around it: uniform in [0.9, 1] for n = 1000's narrow lobe would
 // flatter it, so t is uniform in angle over [0, 2 gran] of the lobe at hand.
@@ -90,6 +92,24 @@ inline void register_lobe_benchmarks(Arch arch) {
       });
     });
   }
+  // The call shapes of a renderer's spans: the 4096 inputs through the array eval in spans of
+  // `count` (the per-element cost of a span of that size), default normalization.
+  for (int k : {3, 5})
+    for (Variant variant : {Variant::precise, Variant::fast})
+      for (std::size_t count : kSpanCounts) {
+        const std::string name = std::string("span/") +
+                                 (variant == Variant::precise ? "kutlog_precise" : "kutlog_fast") +
+                                 "/n:1000/k:" + std::to_string(k) + "/count:" +
+                                 std::to_string(count) + "/arch:" + arch_label;
+        benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& state) {
+          const Lobe lobe(1000, k, kLobeAnchor);
+          run_array(state, arch, lobe_inputs(lobe), lobe_inputs(lobe),
+                    [&](const float* x, const float*, float* out) {
+                      for (std::size_t i = 0; i < N; i += count)
+                        lobe.eval(x + i, out + i, std::min(count, N - i), variant);
+                    });
+        });
+      }
   benchmark::RegisterBenchmark(("lobe/copy/arch:" + arch_label).c_str(), [arch](benchmark::State& state) {
     const std::vector<float> t = uniform_inputs(0, 1);
     run_array(state, arch, t, t, [](const float* x, const float*, float* out) {

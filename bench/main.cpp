@@ -2,7 +2,10 @@
 //
 //   kutlog-bench [benchmark flags] [--kutlog_ratios]
 //   kutlog-bench --kutlog_ratios_from=FILE.json
+//   kutlog-bench --kutlog_setup
 //
+// --kutlog_setup prints the median and worst construction time of a Lobe and a PerLaneLobe
+// over 200 random materials, and runs nothing else.
 // --kutlog_ratios prints, after the run, the throughput ratios of kutlog's kernels to their
 // peers, taken from this one run (medians when --benchmark_repetitions is given);
 // --kutlog_ratios_from prints them from a run saved with --benchmark_out=FILE.json, and runs
@@ -11,7 +14,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <chrono>
 #include <cstring>
+#include <memory>
+#include <random>
+#include <utility>
 #include <string_view>
 #include <string>
 #include <vector>
@@ -49,6 +56,48 @@ void register_scalar_benchmarks() {
   add("math/exp/std/arch:scalar", [](float x) { return std::exp(x); }, uniform_inputs(-80, 80));
   add("math/log/std/arch:scalar", [](float x) { return std::log(x); }, uniform_inputs(1e-3f, 1e3f));
   add("math/pow/std/arch:scalar", [](float x) { return std::pow(x, 1000.0f); }, uniform_inputs(0, 1));
+  // One fragment at a time, as a fragment shader calls it: t = N.H over the lobe, n = 1000.
+  for (int k : {3, 5}) {
+    const auto lobe = std::make_shared<const Lobe>(1000, k, kLobeAnchor);
+    const std::string at = "/n:1000/k:" + std::to_string(k);
+    add(("fragment/scalar_kutlog" + at).c_str(), [lobe](float t) { return lobe->eval(t); },
+        lobe_inputs(*lobe));
+    add(("fragment/scalar_kutlog_fast" + at).c_str(),
+        [lobe](float t) { return lobe->eval(t, Variant::fast); }, lobe_inputs(*lobe));
+    add(("fragment/scalar_powf" + at).c_str(),
+        [](float t) { return powf(std::max(t, 0.0f), 1000.0f); }, lobe_inputs(*lobe));
+    add(("fragment/scalar_pow_double" + at).c_str(),
+        [](float t) { return float(std::pow(double(std::max(t, 0.0f)), 1000.0)); },
+        lobe_inputs(*lobe));
+  }
+}
+
+// Construction time of Lobe and PerLaneLobe over 200 random materials (n log-uniform in
+// [0.5, 10^6], k uniform in 1..64, Q uniform in [0.01, 0.99]; per-lane: n_min from the same
+// n, at least k, n_max = 4 n_min): median and worst, in microseconds.
+void print_setup_times(std::FILE* out) {
+  std::mt19937 engine(12);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::vector<double> lobe_us, per_lane_us;
+  for (int i = 0; i < 200; ++i) {
+    const int k = 1 + int(unit(engine) * 64) % 64;
+    const double n = std::exp(std::log(0.5) + unit(engine) * std::log(2e6));
+    const double Q = 0.01 + 0.98 * unit(engine);
+    const auto time = [](auto construct) {
+      const auto start = std::chrono::steady_clock::now();
+      construct();
+      return std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
+    };
+    lobe_us.push_back(time([&] { benchmark::DoNotOptimize(Lobe(n, k, Q)); }));
+    per_lane_us.push_back(time([&] {
+      benchmark::DoNotOptimize(PerLaneLobe(k, Q, std::max(n, double(k)), 4 * std::max(n, double(k))));
+    }));
+  }
+  for (auto [name, times] : {std::pair{"Lobe", &lobe_us}, std::pair{"PerLaneLobe", &per_lane_us}}) {
+    std::sort(times->begin(), times->end());
+    std::fprintf(out, "setup %s over 200 random materials: median %.1f us, worst %.1f us\n", name,
+                 (*times)[99] / 2 + (*times)[100] / 2, times->back());
+  }
 }
 }  // namespace
 }  // namespace kutlog::bench
@@ -62,6 +111,9 @@ int main(int argc, char** argv) {
     const std::string_view arg = argv[i];
     if (arg == "--kutlog_ratios") {
       print_ratios = true;
+    } else if (arg == "--kutlog_setup") {
+      bench::print_setup_times(stdout);
+      return 0;
     } else if (arg.substr(0, kFromFlag.size()) == kFromFlag) {
       bench::RatioCollector saved;
       try {
