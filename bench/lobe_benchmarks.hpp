@@ -67,7 +67,7 @@ inline void register_lobe_benchmarks(Arch arch) {
             });
       add("kutlog_perlane", at_k, [=](benchmark::State& state) {
         // A glossiness map around n: each lane's n log-uniform in [n/2, 2n].
-        const PerLaneLobe lobe(k, kLobeAnchor, std::max(k, n / 2), 2.0 * n);
+        const PerLaneLobe lobe(std::max(k, n / 2), 2.0 * n, k, kLobeAnchor);
         std::vector<float> exponents = uniform_inputs(std::log(n / 2.0f), std::log(2.0f * n), 2);
         for (float& e : exponents) e = std::max(float(k), std::exp(e));
         run_array(state, arch, lobe_inputs(Lobe(n, k, kLobeAnchor)), exponents,

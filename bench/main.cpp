@@ -90,7 +90,7 @@ void print_setup_times(std::FILE* out) {
     };
     lobe_us.push_back(time([&] { benchmark::DoNotOptimize(Lobe(n, k, Q)); }));
     per_lane_us.push_back(time([&] {
-      benchmark::DoNotOptimize(PerLaneLobe(k, Q, std::max(n, double(k)), 4 * std::max(n, double(k))));
+      benchmark::DoNotOptimize(PerLaneLobe(std::max(n, double(k)), 4 * std::max(n, double(k)), k, Q));
     }));
   }
   for (auto [name, times] : {std::pair{"Lobe", &lobe_us}, std::pair{"PerLaneLobe", &per_lane_us}}) {

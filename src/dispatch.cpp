@@ -208,7 +208,8 @@ void pow_u10(const float* x, float y, float* out, std::size_t count) {
 void Lobe::eval(const float* t, float* out, std::size_t count, Variant variant,
                 Normalization normalization) const {
   const detail::KernelTable& table = active_table();
-  table.kutlog_lobe(kernel(variant, normalization, table.fused_fma), t, out, count);
+  const LobeKernel& chosen = kernel(variant, normalization, table.fused_fma);
+  table.kutlog_lobe.of(chosen)(chosen, t, out, count);
 }
 void PerLaneLobe::eval(const float* t, const float* n, float* out, std::size_t count,
                        Normalization normalization) const {
@@ -232,13 +233,19 @@ void shade(const Lobe& lobe, Vectors normal, Vectors to_light, Vectors to_viewer
            std::size_t count, const std::uint8_t* mask, ShadeOptions options) {
   const detail::KernelTable& table = active_table();
   table.shade_vectors(lobe.kernel(options.variant, options.normalization, table.fused_fma),
-                      options.reflection, normal, to_light, to_viewer, out, count, mask);
+                      options, normal, to_light, to_viewer, out, count, mask);
+}
+void shade(const Lobe& lobe, Vectors normal, Direction to_light, Direction to_viewer, float* out,
+           std::size_t count, const std::uint8_t* mask, ShadeOptions options) {
+  const detail::KernelTable& table = active_table();
+  table.shade_directions(lobe.kernel(options.variant, options.normalization, table.fused_fma),
+                         options, normal, to_light, to_viewer, out, count, mask);
 }
 void shade(const Lobe& lobe, const float* t, const float* n_dot_l, float* out, std::size_t count,
            const std::uint8_t* mask, ShadeOptions options) {
   const detail::KernelTable& table = active_table();
-  table.shade_cosines(lobe.kernel(options.variant, options.normalization, table.fused_fma), t,
-                      n_dot_l, out, count, mask);
+  table.shade_cosines(lobe.kernel(options.variant, options.normalization, table.fused_fma),
+                      options, t, n_dot_l, out, count, mask);
 }
 
 }  // namespace kutlog

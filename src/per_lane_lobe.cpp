@@ -52,7 +52,7 @@ std::optional<int> fit_float(const std::function<Real(Real)>& g, double lo, doub
 
 }  // namespace
 
-PerLaneLobe::PerLaneLobe(int k, double Q, double n_min, double n_max) : k_(k), Q_(Q) {
+PerLaneLobe::PerLaneLobe(double n_min, double n_max, int k, double Q) : k_(k), Q_(Q) {
   ref::validate_exponent(n_min, "n_min");
   ref::validate_exponent(n_max, "n_max");
   ref::validate_parameters(n_min, k, Q);  // k and Q

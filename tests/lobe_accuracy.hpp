@@ -133,7 +133,7 @@ inline std::vector<PerLaneCase> per_lane_materials(int random_count, unsigned se
 inline void expect_per_lane_within_bounds(const PerLaneCase& c, unsigned seed, std::size_t lanes,
                                           PerLaneEvaluator evaluate = evaluate_per_lane_array) {
   const LobeBound bound = kLobeBounds[2];
-  const PerLaneLobe lobe(c.k, c.Q, c.n_min, c.n_max);
+  const PerLaneLobe lobe(c.n_min, c.n_max, c.k, c.Q);
   std::mt19937 engine(seed);
   std::uniform_real_distribution<double> log_n(std::log(c.n_min), std::log(c.n_max)), unit(0, 1);
   std::vector<float> t(lanes), n(lanes), ones(lanes, 1.0f), out(lanes), peak(lanes);

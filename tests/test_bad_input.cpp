@@ -38,14 +38,14 @@ TEST(BadParameters, LobeNamesEachInvalidParameterAndItsRange) {
 
 TEST(BadParameters, PerLaneLobeNamesEachInvalidParameterAndItsRange) {
   for (double n : {0.0, -1.0, kNaN, kInf}) {
-    expect_invalid([n] { PerLaneLobe(3, 0.5, n, 100); }, "n_min", "finite and > 0");
-    expect_invalid([n] { PerLaneLobe(3, 0.5, 10, n); }, "n_max", "finite and > 0");
+    expect_invalid([n] { PerLaneLobe(n, 100, 3, 0.5); }, "n_min", "finite and > 0");
+    expect_invalid([n] { PerLaneLobe(10, n, 3, 0.5); }, "n_max", "finite and > 0");
   }
-  expect_invalid([] { PerLaneLobe(3, 0.5, 2, 100); }, "n_min", ">= k");
-  expect_invalid([] { PerLaneLobe(3, 0.5, 100, 10); }, "n_max", ">= n_min");
-  expect_invalid([] { PerLaneLobe(3, 0.5, 10, 1e39); }, "n_max", "<= FLT_MAX");  // lanes are floats
-  expect_invalid([] { PerLaneLobe(0, 0.5, 10, 100); }, "k", "integer in [1, 64]");
-  expect_invalid([] { PerLaneLobe(3, 1.5, 10, 100); }, "Q", "in (0, 1)");
+  expect_invalid([] { PerLaneLobe(2, 100, 3, 0.5); }, "n_min", ">= k");
+  expect_invalid([] { PerLaneLobe(100, 10, 3, 0.5); }, "n_max", ">= n_min");
+  expect_invalid([] { PerLaneLobe(10, 1e39, 3, 0.5); }, "n_max", "<= FLT_MAX");  // lanes are floats
+  expect_invalid([] { PerLaneLobe(10, 100, 0, 0.5); }, "k", "integer in [1, 64]");
+  expect_invalid([] { PerLaneLobe(10, 100, 3, 1.5); }, "Q", "in (0, 1)");
 }
 
 // The baselines take n per call: checked before anything is written.
@@ -79,7 +79,7 @@ const Lobe& empty_test_lobe() {
   return lobe;
 }
 const PerLaneLobe& empty_test_per_lane_lobe() {
-  static const PerLaneLobe lobe(3, 0.5, 10, 1000);
+  static const PerLaneLobe lobe(10, 1000, 3, 0.5);
   return lobe;
 }
 template <typename Call>
@@ -165,6 +165,7 @@ TEST_P(BadData, ShadeVectorsFollowTheDataRule) {
     std::vector<float> out(nx.size());
     ShadeOptions options;
     options.reflection = reflection;
+    options.normalization = Normalization::exact_coef;
     shade(lobe, {nx.data(), ny.data(), nz.data()}, {lx.data(), ly.data(), lz.data()},
           {vx.data(), vy.data(), vz.data()}, out.data(), out.size(), nullptr, options);
     for (int i : {0, 1, 2, 3, 6}) EXPECT_TRUE(std::isnan(out[i])) << "lane " << i << ": " << out[i];
@@ -180,7 +181,9 @@ TEST_P(BadData, ShadeCosinesFollowTheDataRule) {
   const float t[] = {kNaNf, 0.9f, 0.9f, kInff, -kInff, 1.5f, 0.99f};  // F(0.99) > 0
   const float n_dot_l[] = {0.5f, kNaNf, -0.5f, 0.5f, 0.5f, 1.0f, kInff};
   float out[7];
-  shade(lobe, t, n_dot_l, out, 7);
+  ShadeOptions normalized;
+  normalized.normalization = Normalization::exact_coef;
+  shade(lobe, t, n_dot_l, out, 7, nullptr, normalized);
   EXPECT_TRUE(std::isnan(out[0]));
   EXPECT_TRUE(std::isnan(out[1]));
   EXPECT_EQ(out[2], 0.0f);

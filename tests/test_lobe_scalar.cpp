@@ -58,7 +58,7 @@ TEST(LobeScalar, DataRuleAsTheArrays) {
         EXPECT_TRUE(std::isnan(lobe.eval(kNaN, variant, normalization)));
       }
   }
-  const PerLaneLobe per_lane(3, 0.5, 10, 1000);
+  const PerLaneLobe per_lane(10, 1000, 3, 0.5);
   EXPECT_EQ(per_lane.eval(1.5f, 100.0f), 1.0f);
   EXPECT_EQ(per_lane.eval(-0.2f, 100.0f), 0.0f);
   EXPECT_TRUE(std::isnan(per_lane.eval(kNaN, 100.0f)));

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -86,6 +88,7 @@ TEST_P(ShadePerArch, BlinnAndPhongMatchTheReference) {
     for (Reflection reflection : {Reflection::blinn, Reflection::phong}) {
       ShadeOptions options;
       options.reflection = reflection;
+      options.normalization = Normalization::exact_coef;
       shade(lobe, scene.normal(), scene.light(), scene.viewer(), out.data(), out.size(), nullptr,
             options);
       const double dt = reflection == Reflection::blinn ? test::kBlinnCosineError
@@ -161,6 +164,54 @@ TEST_P(ShadePerArch, OppositeLightAndViewerAndNaN) {
     EXPECT_TRUE(std::isnan(out[1]));
     EXPECT_TRUE(std::isnan(out[2]));  // Blinn: a NaN length of L + V, not "L + V = 0"
   }
+}
+
+// One directional light and a fixed viewer as single vectors: the same values as the SoA
+// overload given those vectors in every lane, bit for bit, for both reflections, with and
+// without the N.L factor; without it, the cosine form gives exactly the lobe's eval.
+TEST_P(ShadePerArch, DirectionsAndOptionalNDotLAgreeWithTheArrays) {
+  const Lobe lobe(300, 3, 0.4);
+  Scene scene = random_scene(157, 3);
+  const Direction to_light{scene.lx[0], scene.ly[0], scene.lz[0]},
+      to_viewer{scene.vx[0], scene.vy[0], scene.vz[0]};
+  std::fill(scene.lx.begin(), scene.lx.end(), to_light.x);
+  std::fill(scene.ly.begin(), scene.ly.end(), to_light.y);
+  std::fill(scene.lz.begin(), scene.lz.end(), to_light.z);
+  std::fill(scene.vx.begin(), scene.vx.end(), to_viewer.x);
+  std::fill(scene.vy.begin(), scene.vy.end(), to_viewer.y);
+  std::fill(scene.vz.begin(), scene.vz.end(), to_viewer.z);
+  // Normals spread around the highlight, so that some lanes are lit.
+  for (std::size_t i = 0; i < scene.nx.size(); ++i) {
+    const float hx = to_light.x + to_viewer.x, hy = to_light.y + to_viewer.y,
+                hz = to_light.z + to_viewer.z, length = std::sqrt(hx * hx + hy * hy + hz * hz);
+    const float wobble = 0.002f * float(i % 13) - 0.012f;
+    const float nx = hx / length + wobble, ny = hy / length - wobble, nz = hz / length;
+    const float n_length = std::sqrt(nx * nx + ny * ny + nz * nz);
+    scene.nx[i] = nx / n_length, scene.ny[i] = ny / n_length, scene.nz[i] = nz / n_length;
+  }
+  std::vector<float> arrays(157), directions(157);
+  int lit = 0;
+  for (Reflection reflection : {Reflection::blinn, Reflection::phong})
+    for (bool times_n_dot_l : {true, false}) {
+      ShadeOptions options;
+      options.reflection = reflection;
+      options.times_n_dot_l = times_n_dot_l;
+      shade(lobe, scene.normal(), scene.light(), scene.viewer(), arrays.data(), 157, nullptr, options);
+      shade(lobe, scene.normal(), to_light, to_viewer, directions.data(), 157, nullptr, options);
+      for (std::size_t i = 0; i < 157; ++i) {
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(arrays[i]), std::bit_cast<std::uint32_t>(directions[i]))
+            << "lane " << i;
+        lit += directions[i] > 0;
+      }
+    }
+  EXPECT_GT(lit, 100);
+  std::vector<float> t(157), from_cosines(157), evaluated(157);
+  for (std::size_t i = 0; i < 157; ++i) t[i] = 1.0f - 0.0005f * float(i);
+  ShadeOptions bare;
+  bare.times_n_dot_l = false;
+  shade(lobe, t.data(), nullptr, from_cosines.data(), 157, nullptr, bare);
+  lobe.eval(t.data(), evaluated.data(), 157);
+  for (std::size_t i = 0; i < 157; ++i) ASSERT_EQ(from_cosines[i], evaluated[i]) << "t = " << t[i];
 }
 
 INSTANTIATE_TEST_SUITE_P(Arch, ShadePerArch, testing::ValuesIn(supported_archs()), arch_test_name);

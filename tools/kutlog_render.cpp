@@ -132,10 +132,11 @@ int main(int argc, char** argv) {
           to_l{r.lx.data(), r.ly.data(), r.lz.data()}, to_v{r.vx.data(), r.vy.data(), r.vz.data()};
       std::fill(kutlog_f.begin(), kutlog_f.end(), 0.0f);
       std::fill(kutlog_normalized.begin(), kutlog_normalized.end(), 0.0f);
-      kutlog::ShadeOptions plain;
-      plain.normalization = kutlog::Normalization::none;
-      kutlog::shade(lobe, normal, to_l, to_v, kutlog_f.data(), size, r.covered.data(), plain);
-      kutlog::shade(lobe, normal, to_l, to_v, kutlog_normalized.data(), size, r.covered.data());
+      kutlog::ShadeOptions normalized;
+      normalized.normalization = kutlog::Normalization::exact_coef;
+      kutlog::shade(lobe, normal, to_l, to_v, kutlog_f.data(), size, r.covered.data());
+      kutlog::shade(lobe, normal, to_l, to_v, kutlog_normalized.data(), size, r.covered.data(),
+                    normalized);
       kutlog::blinn_phong_u10(r.n_dot_h.data(), power.data(), size, float(n));
       kutlog::schlick(r.n_dot_h.data(), schlick.data(), size, float(n));
       for (int column = 0; column < size; ++column) {

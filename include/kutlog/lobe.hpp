@@ -35,6 +35,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 namespace kutlog {
 
@@ -64,7 +65,8 @@ struct LobeKernel {
   std::array<float, kMaxDegree + 1> q_f{};   // SIMD polynomial form, times scale
   std::array<double, kMaxDegree + 1> q_d{};  // base_power form; scalar: both forms, times scale
 
-  // The scalar path, in double: the value before its one rounding to float. t > t_cut.
+  // The scalar path, in double: the value before its one rounding to float (meaningful for
+  // t > t_cut; finite elsewhere in [-1, 1], NaN for NaN).
   double unrounded(float t) const {
     const double clamped = t < 1.0f ? double(t) : 1.0, w = 1.0 - clamped;
     const double x = form == Form::polynomial ? double(center_t) - clamped : w;
@@ -77,19 +79,25 @@ struct LobeKernel {
     return scale_d * power;
   }
   // F(t) by the scalar path: 0 at or below t_cut, NaN for NaN, else unrounded(t) rounded to
-  // float and clamped to [0, scale_f].
+  // float and clamped to [0, scale_f]. Without a branch on t: half of a lobe's neighbourhood is
+  // past the cut, and a mispredicted branch there cost as much as the polynomial.
   float evaluate(float t) const {
     if (!(t > t_cut)) return t == t ? 0.0f : t;
     const float value = float(unrounded(t));
     return value < 0.0f ? 0.0f : value > scale_f ? scale_f : value;
   }
+
 };
 
 class Lobe {
  public:
   // Throws std::invalid_argument naming the parameter and its range: n finite > 0, k integer
-  // in [1, 64], Q in (0, 1).
+  // in [1, 64], Q in (0, 1). A k that is not of an integer type does not compile (no silent
+  // truncation of Lobe(50, 0.5, 3) or of k = 2.5).
   Lobe(double n, int k, double Q);
+  template <class N, class K, class Anchor>
+    requires(!std::is_integral_v<K>)
+  Lobe(N, K, Anchor) = delete;
 
   double n() const { return n_; }
   int k() const { return k_; }
@@ -181,7 +189,11 @@ struct PerLaneKernel {
 //   (tests/test_lobe.cpp); the epicenter's ULP error is reported by kutlog/accuracy.hpp.
 class PerLaneLobe {
  public:
-  PerLaneLobe(int k, double Q, double n_min, double n_max);
+  // The parameters in Lobe's order, n first: PerLaneLobe(n_min, n_max, k, Q).
+  PerLaneLobe(double n_min, double n_max, int k, double Q);
+  template <class N1, class N2, class K, class Anchor>
+    requires(!std::is_integral_v<K>)
+  PerLaneLobe(N1, N2, K, Anchor) = delete;
 
   int k() const { return k_; }
   double Q() const { return Q_; }

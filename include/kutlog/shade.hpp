@@ -3,7 +3,8 @@
 // From structure-of-arrays vectors it forms the cosine the lobe needs (Blinn: N.H with
 // H = (L + V) / |L + V|; Phong: R.V with R = 2 (N.L) N - L) and writes
 //
-//   out[i] = F(t_i) * max(N_i . L_i, 0)      (F = coef * F_kutlog when normalized)
+//   out[i] = F(t_i) * max(N_i . L_i, 0)      (F = coef * F_kutlog when normalized; the factor
+//                                             max(N.L, 0) unless options.times_n_dot_l is false)
 //
 // N, L and V must be unit vectors (the cosines are not renormalized; rounding of normalized
 // vectors is covered by the lobe's data rule, t > 1 giving F(1)). Where L + V = 0 the half
@@ -33,18 +34,32 @@ struct Vectors {
   const float* z;
 };
 
+// One vector for every lane: a directional light, or the viewer of an orthographic (or
+// distant) camera. Unit length, like the arrays'.
+struct Direction {
+  float x, y, z;
+};
+
 enum class Reflection : std::uint8_t { blinn, phong };
 
+// The defaults are Lobe::eval's: precise, unnormalized (F in [0, 1]; Normalization::exact_coef
+// for the energy-conserving coef * F), Blinn, times max(N.L, 0).
 struct ShadeOptions {
   Variant variant = Variant::precise;
-  Normalization normalization = Normalization::exact_coef;
+  Normalization normalization = Normalization::none;
   Reflection reflection = Reflection::blinn;
+  bool times_n_dot_l = true;  // false: F(t) alone, for a caller that applies its own N.L
 };
 
 void shade(const Lobe& lobe, Vectors normal, Vectors to_light, Vectors to_viewer, float* out,
            std::size_t count, const std::uint8_t* mask = nullptr, ShadeOptions options = {});
 
-// The same from cosines computed by the caller: out[i] = F(t[i]) * max(n_dot_l[i], 0).
+// A span lit by one directional light and seen from a fixed viewer: only the normals vary.
+void shade(const Lobe& lobe, Vectors normal, Direction to_light, Direction to_viewer, float* out,
+           std::size_t count, const std::uint8_t* mask = nullptr, ShadeOptions options = {});
+
+// The same from cosines computed by the caller: out[i] = F(t[i]) * max(n_dot_l[i], 0) (n_dot_l
+// may be null when options.times_n_dot_l is false).
 void shade(const Lobe& lobe, const float* t, const float* n_dot_l, float* out, std::size_t count,
            const std::uint8_t* mask = nullptr, ShadeOptions options = {});
 

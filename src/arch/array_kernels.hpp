@@ -13,9 +13,55 @@
 
 namespace kutlog::detail {
 
-// Applies `kernel` to batches of `count` floats from each input array. The tail goes through
-// an aligned local buffer padded with `padding` (a value inside every kernel's domain), so no
-// load or store leaves the arrays.
+template <class Arch>
+using floats_of = xsimd::batch<float, Arch>;
+
+// The first `count` (< N) lanes of an array, `padding` in the others, and their store: AVX-512
+// and AVX2 move them with a lane mask (masked lanes never touch memory), SSE4.1 through a
+// local buffer. No load or store leaves the arrays.
+template <class Arch>
+inline xsimd::batch<float, Arch> load_partial(const float* in, std::size_t count, float padding) {
+  using F = xsimd::batch<float, Arch>;
+#if XSIMD_WITH_AVX512F
+  if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>)
+    return _mm512_mask_loadu_ps(_mm512_set1_ps(padding), __mmask16((1u << count) - 1), in);
+#endif
+#if XSIMD_WITH_AVX2
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch> && !std::is_base_of_v<xsimd::avx512f, Arch>) {
+    const __m256i lanes = _mm256_cmpgt_epi32(_mm256_set1_epi32(int(count)),
+                                             _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
+    return _mm256_blendv_ps(_mm256_set1_ps(padding), _mm256_maskload_ps(in, lanes),
+                            _mm256_castsi256_ps(lanes));
+  }
+#endif
+  alignas(64) float buffer[F::size];
+  for (std::size_t j = 0; j < F::size; ++j) buffer[j] = j < count ? in[j] : padding;
+  return F::load_aligned(buffer);
+}
+template <class Arch>
+inline void store_partial(float* out, xsimd::batch<float, Arch> value, std::size_t count) {
+  using F = xsimd::batch<float, Arch>;
+#if XSIMD_WITH_AVX512F
+  if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
+    _mm512_mask_storeu_ps(out, __mmask16((1u << count) - 1), value);
+    return;
+  }
+#endif
+#if XSIMD_WITH_AVX2
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch> && !std::is_base_of_v<xsimd::avx512f, Arch>) {
+    _mm256_maskstore_ps(out, _mm256_cmpgt_epi32(_mm256_set1_epi32(int(count)),
+                                                 _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7)),
+                        value);
+    return;
+  }
+#endif
+  alignas(64) float result[F::size];
+  value.store_aligned(result);
+  for (std::size_t j = 0; j < count; ++j) out[j] = result[j];
+}
+
+// Applies `kernel` to batches of `count` floats from each input array; the tail as a partial
+// batch padded with `padding` (a value inside every kernel's domain).
 template <class Arch, int Inputs, class Kernel>
 inline void map_arrays(const Kernel& kernel, const float* const (&inputs)[Inputs], float* out,
                        std::size_t count, float padding = 0.5f) {
@@ -28,33 +74,27 @@ inline void map_arrays(const Kernel& kernel, const float* const (&inputs)[Inputs
     if constexpr (Inputs == 2) kernel(load(0), load(1)).store_unaligned(out + i);
   }
   if (i == count) return;
-  alignas(64) float buffer[Inputs][N];
   const std::size_t tail = count - i;
-  for (int input = 0; input < Inputs; ++input)
-    for (std::size_t j = 0; j < N; ++j) buffer[input][j] = j < tail ? inputs[input][i + j] : padding;
-  alignas(64) float result[N];
-  if constexpr (Inputs == 1) kernel(F::load_aligned(buffer[0])).store_aligned(result);
-  if constexpr (Inputs == 2)
-    kernel(F::load_aligned(buffer[0]), F::load_aligned(buffer[1])).store_aligned(result);
-  for (std::size_t j = 0; j < tail; ++j) out[i + j] = result[j];
+  const auto partial = [&](int input) { return load_partial<Arch>(inputs[input] + i, tail, padding); };
+  if constexpr (Inputs == 1) store_partial<Arch>(out + i, kernel(partial(0)), tail);
+  if constexpr (Inputs == 2) store_partial<Arch>(out + i, kernel(partial(0), partial(1)), tail);
 }
 
-// The lobe over an array: the float form with its degree as a template argument (unrolled,
-// coefficients in registers), chosen once per call; the double form generic.
+// The lobe over an array: the polynomial form with its degree as a template argument (unrolled,
+// coefficients in registers), the base_power form generic. The table holds one per degree, so
+// that a call picks its loop with one index and no further dispatch.
 template <class Arch, int kDegree>
 void kutlog_lobe_array(const LobeKernel& kernel, const float* t, float* out, std::size_t count) {
   map_arrays<Arch, 1>(simd::PreparedLobe<Arch, kDegree>(kernel), {t}, out, count, 1.0f);
 }
-inline constexpr int kMaxUnrolledDegree = 16;
 template <class Arch>
-void kutlog_lobe_array_any(const LobeKernel& kernel, const float* t, float* out,
-                           std::size_t count) {
-  static constexpr auto by_degree = []<int... degree>(std::integer_sequence<int, degree...>) {
-    return std::array<LobeArrayKernel, sizeof...(degree)>{&kutlog_lobe_array<Arch, degree>...};
-  }(std::make_integer_sequence<int, kMaxUnrolledDegree + 1>());
-  const bool unrolled = kernel.form == LobeKernel::Form::polynomial &&
-                        kernel.degree <= kMaxUnrolledDegree;
-  (unrolled ? by_degree[kernel.degree] : &kutlog_lobe_array<Arch, -1>)(kernel, t, out, count);
+constexpr LobeArrayKernels lobe_array_kernels() {
+  LobeArrayKernels kernels{};
+  [&]<int... degree>(std::integer_sequence<int, degree...>) {
+    ((kernels.polynomial_of_degree[degree] = &kutlog_lobe_array<Arch, degree>), ...);
+  }(std::make_integer_sequence<int, LobeArrayKernels::kMaxUnrolledDegree + 1>());
+  kernels.any = &kutlog_lobe_array<Arch, -1>;
+  return kernels;
 }
 
 // The stream loop: kernel(inputs...) on batches of Inputs arrays, stored where mask (if any)
@@ -92,18 +132,26 @@ inline void map_masked(const Kernel& kernel, const float* const (&inputs)[Inputs
   for (std::size_t j = 0; j < tail; ++j) out[i + j] = result[j];
 }
 
+// The specular term of one batch: F(t), times max(N.L, 0) if asked.
 template <class Arch>
-void shade_vectors_array(const LobeKernel& kernel, Reflection reflection, Vectors normal,
+inline floats_of<Arch> specular(const simd::PreparedLobe<Arch>& lobe, const ShadeOptions& options,
+                                const simd::Vector3<Arch>& n, const simd::Vector3<Arch>& l,
+                                const simd::Vector3<Arch>& v) {
+  using F = floats_of<Arch>;
+  const F n_dot_l = simd::dot(n, l);
+  const F t = options.reflection == Reflection::blinn ? simd::blinn_cosine(n, l, v)
+                                                      : simd::phong_cosine(n, l, v, n_dot_l);
+  return options.times_n_dot_l ? lobe(t) * xsimd::max(F(0.0f), n_dot_l) : lobe(t);
+}
+
+template <class Arch>
+void shade_vectors_array(const LobeKernel& kernel, const ShadeOptions& options, Vectors normal,
                          Vectors to_light, Vectors to_viewer, float* out, std::size_t count,
                          const std::uint8_t* mask) {
-  using F = xsimd::batch<float, Arch>;
+  using F = floats_of<Arch>;
   const simd::PreparedLobe<Arch> lobe(kernel);
   const auto shader = [&](F nx, F ny, F nz, F lx, F ly, F lz, F vx, F vy, F vz) {
-    const simd::Vector3<Arch> n{nx, ny, nz}, l{lx, ly, lz}, v{vx, vy, vz};
-    const F n_dot_l = simd::dot(n, l);
-    const F t = reflection == Reflection::blinn ? simd::blinn_cosine(n, l, v)
-                                                : simd::phong_cosine(n, l, v, n_dot_l);
-    return lobe(t) * xsimd::max(F(0.0f), n_dot_l);
+    return specular<Arch>(lobe, options, {nx, ny, nz}, {lx, ly, lz}, {vx, vy, vz});
   };
   map_masked<Arch, 9>(shader,
                       {normal.x, normal.y, normal.z, to_light.x, to_light.y, to_light.z,
@@ -112,10 +160,27 @@ void shade_vectors_array(const LobeKernel& kernel, Reflection reflection, Vector
 }
 
 template <class Arch>
-void shade_cosines_array(const LobeKernel& kernel, const float* t, const float* n_dot_l,
-                         float* out, std::size_t count, const std::uint8_t* mask) {
-  using F = xsimd::batch<float, Arch>;
+void shade_directions_array(const LobeKernel& kernel, const ShadeOptions& options, Vectors normal,
+                            Direction to_light, Direction to_viewer, float* out,
+                            std::size_t count, const std::uint8_t* mask) {
+  using F = floats_of<Arch>;
   const simd::PreparedLobe<Arch> lobe(kernel);
+  const simd::Vector3<Arch> l{F(to_light.x), F(to_light.y), F(to_light.z)},
+      v{F(to_viewer.x), F(to_viewer.y), F(to_viewer.z)};
+  map_masked<Arch, 3>([&](F nx, F ny, F nz) { return specular<Arch>(lobe, options, {nx, ny, nz}, l, v); },
+                      {normal.x, normal.y, normal.z}, out, count, mask);
+}
+
+template <class Arch>
+void shade_cosines_array(const LobeKernel& kernel, const ShadeOptions& options, const float* t,
+                         const float* n_dot_l, float* out, std::size_t count,
+                         const std::uint8_t* mask) {
+  using F = floats_of<Arch>;
+  const simd::PreparedLobe<Arch> lobe(kernel);
+  if (!options.times_n_dot_l) {
+    map_masked<Arch, 1>([&](F cosine) { return lobe(cosine); }, {t}, out, count, mask);
+    return;
+  }
   map_masked<Arch, 2>([&](F cosine, F n_l) { return lobe(cosine) * xsimd::max(F(0.0f), n_l); },
                       {t, n_dot_l}, out, count, mask);
 }
@@ -148,7 +213,7 @@ KernelTable make_kernel_table() {
     map_arrays<Arch, 1>([exponent](F a) { return simd::pow_u10(a, exponent); }, {x}, out,
                         count);
   };
-  table.kutlog_lobe = &kutlog_lobe_array_any<Arch>;
+  table.kutlog_lobe = lobe_array_kernels<Arch>();
   table.kutlog_per_lane = [](const PerLaneKernel& kernel, bool normalized, const float* t,
                              const float* n, float* out, std::size_t count) {
     map_arrays<Arch, 2>(simd::PreparedPerLaneLobe<Arch>(kernel, normalized), {t, n}, out, count,
@@ -165,6 +230,7 @@ KernelTable make_kernel_table() {
                         out, count);
   };
   table.shade_vectors = &shade_vectors_array<Arch>;
+  table.shade_directions = &shade_directions_array<Arch>;
   table.shade_cosines = &shade_cosines_array<Arch>;
   table.schlick = [](const float* t, float n, float* out, std::size_t count) {
     const F exponent(n);

@@ -13,12 +13,26 @@ using BinaryArrayKernel = void (*)(const float*, const float*, float*, std::size
 using BinaryScalarArrayKernel = void (*)(const float*, float, float*, std::size_t);
 
 using LobeArrayKernel = void (*)(const LobeKernel&, const float*, float*, std::size_t);
+// The lobe's array loops: unrolled for each polynomial degree up to kMaxUnrolledDegree, and one
+// for any kernel.
+struct LobeArrayKernels {
+  static constexpr int kMaxUnrolledDegree = 16;
+  LobeArrayKernel polynomial_of_degree[kMaxUnrolledDegree + 1];
+  LobeArrayKernel any;
+  LobeArrayKernel of(const LobeKernel& kernel) const {
+    return kernel.form == LobeKernel::Form::polynomial && kernel.degree <= kMaxUnrolledDegree
+               ? polynomial_of_degree[kernel.degree]
+               : any;
+  }
+};
 using PowerLobeArrayKernel = void (*)(const float*, float n, float scale, float*, std::size_t);
 
-using ShadeVectorsKernel = void (*)(const LobeKernel&, Reflection, Vectors, Vectors, Vectors,
-                                    float*, std::size_t, const std::uint8_t*);
-using ShadeCosinesKernel = void (*)(const LobeKernel&, const float*, const float*, float*,
-                                    std::size_t, const std::uint8_t*);
+using ShadeVectorsKernel = void (*)(const LobeKernel&, const ShadeOptions&, Vectors, Vectors,
+                                    Vectors, float*, std::size_t, const std::uint8_t*);
+using ShadeDirectionsKernel = void (*)(const LobeKernel&, const ShadeOptions&, Vectors, Direction,
+                                       Direction, float*, std::size_t, const std::uint8_t*);
+using ShadeCosinesKernel = void (*)(const LobeKernel&, const ShadeOptions&, const float*,
+                                    const float*, float*, std::size_t, const std::uint8_t*);
 
 using PerLaneArrayKernel = void (*)(const PerLaneKernel&, bool normalized, const float*,
                                     const float*, float*, std::size_t);
@@ -28,11 +42,12 @@ struct KernelTable {
   UnaryArrayKernel acos_u10, cos_u10, cos_halfpi_u10, exp_u10, log_u10;
   BinaryArrayKernel pow_u10;
   BinaryScalarArrayKernel pow_scalar_u10;
-  LobeArrayKernel kutlog_lobe;
+  LobeArrayKernels kutlog_lobe;
   PerLaneArrayKernel kutlog_per_lane;
   PowerLobeArrayKernel blinn_phong_xsimd, blinn_phong_u10;
   BinaryScalarArrayKernel schlick;
   ShadeVectorsKernel shade_vectors;
+  ShadeDirectionsKernel shade_directions;
   ShadeCosinesKernel shade_cosines;
 };
 

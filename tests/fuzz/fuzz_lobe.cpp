@@ -68,7 +68,7 @@ void fuzz_lobe(FuzzedDataProvider& data) {
       });
 }
 
-// The documented domain of PerLaneLobe(k, Q, n_min, n_max) (kutlog/lobe.hpp).
+// The documented domain of PerLaneLobe(n_min, n_max, k, Q) (kutlog/lobe.hpp).
 struct PerLaneParameters {
   int k;
   double Q, n_min, n_max;
@@ -95,7 +95,7 @@ void fuzz_per_lane_lobe(FuzzedDataProvider& data) {
       parameters.valid(),
       [&] {
         const auto make = [&] {
-          return PerLaneLobe(parameters.k, parameters.Q, parameters.n_min, parameters.n_max);
+          return PerLaneLobe(parameters.n_min, parameters.n_max, parameters.k, parameters.Q);
         };
         if (!parameters.valid()) {
           make();  // not cached: it must throw at once

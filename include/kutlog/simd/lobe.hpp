@@ -46,15 +46,18 @@ class PreparedLobe {
   using F = floats<Arch>;
   using D = doubles<Arch>;
 
+  // Broadcasts only the coefficients the degree uses: a small span pays for nothing else.
   explicit PreparedLobe(const LobeKernel& kernel)
       : kernel_(kernel), t_cut_(kernel.t_cut), center_(kernel.center_t), scale_(kernel.scale_f) {
-    for (int i = 0; i <= kernel.degree && i <= LobeKernel::kMaxDegree; ++i) q_[i] = F(kernel.q_f[i]);
+    const int degree = kDegree >= 0 ? kDegree : kernel.degree;
+    for (int i = 0; i <= degree && i <= LobeKernel::kMaxDegree; ++i) q_[i] = F(kernel.q_f[i]);
   }
 
   // Within [0, scale]: the clamp costs two instructions and removes the rounding below 0
   // near the cut-off and above the peak that the polynomial alone would let through.
+  // A fixed degree is the polynomial form's (the base_power form runs with kDegree = -1).
   F operator()(F t) const {
-    if (kernel_.form == LobeKernel::Form::polynomial)
+    if (kDegree >= 0 || kernel_.form == LobeKernel::Form::polynomial)
       return detail::clamp_zero_to(float_form(t), scale_);
     return xsimd::select(t <= t_cut_, F(0.0f), detail::clamp_zero_to(double_form(t), scale_));
   }
@@ -101,7 +104,7 @@ class PreparedLobe {
 
   const LobeKernel& kernel_;
   F t_cut_, center_, scale_;
-  std::array<F, LobeKernel::kMaxDegree + 1> q_{};
+  std::array<F, (kDegree >= 0 ? kDegree : LobeKernel::kMaxDegree) + 1> q_;  // [0, degree] set
 };
 
 // A PerLaneKernel with its constants broadcast once: F(t; n) per lane (kutlog/lobe.hpp).

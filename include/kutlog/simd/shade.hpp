@@ -59,7 +59,10 @@ inline xsimd::batch_bool<float, Arch> load_mask(const std::uint8_t* mask) {
   {
     std::int32_t four;
     __builtin_memcpy(&four, mask, sizeof four);
-    const __m128i lanes = _mm_cvtepu8_epi32(_mm_cvtsi32_si128(four));
+    // Bytes to 32-bit lanes with SSE2 alone, so that this header compiles with the compiler's
+    // default x86-64 flags.
+    const __m128i zero = _mm_setzero_si128();
+    const __m128i lanes = _mm_unpacklo_epi16(_mm_unpacklo_epi8(_mm_cvtsi32_si128(four), zero), zero);
     return xsimd::batch_bool<float, Arch>(_mm_castsi128_ps(_mm_cmpgt_epi32(lanes, _mm_setzero_si128())));
   }
 }
