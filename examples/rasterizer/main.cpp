@@ -1,12 +1,15 @@
 // kutlog-rasterizer: renders the Utah teapot with a z-buffer, perspective-correct normals and
 // coef * F_kutlog shading per 16x16 tile through kutlog's stream API (kutlog::shade, coverage
 // as the lane mask), on every core, and times that shading against pow-based Blinn-Phong
-// (kutlog::blinn_phong_xsimd, xsimd::pow) from the same cosines.
+// (kutlog::blinn_phong_xsimd, xsimd::pow) from the same cosines. It also times the shape most
+// software rasterizers have, a fragment function per pixel: kutlog's scalar Lobe::eval against
+// powf.
 #include <OpenImageIO/imagebuf.h>
 
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -97,7 +100,19 @@ int main(int argc, char** argv) {
   const std::vector<Vec3> screen = kutlog::examples::project(mesh, camera);
   VisibilityBuffer buffer(*width, *height);
   std::vector<float> image(std::size_t(*width) * *height);
-  std::vector<double> kutlog_ms, pow_ms;
+  std::vector<double> kutlog_ms, pow_ms, fragment_kutlog_ms, fragment_powf_ms;
+  // The fragment functions: the specular term of one pixel, coef F(N.H) max(N.L, 0) by the
+  // scalar eval, against the normalized (N.H)^n max(N.L, 0) of pow-based Blinn-Phong.
+  const float blinn_phong_coef = (n + 8) / (8 * 3.14159265f);
+  kutlog::ShadeOptions normalized;
+  normalized.normalization = kutlog::Normalization::exact_coef;
+  const auto fragment_kutlog = [&lobe](float t, float n_dot_l) {
+    return lobe.eval(t, kutlog::Variant::precise, kutlog::Normalization::exact_coef) *
+           std::max(n_dot_l, 0.0f);
+  };
+  const auto fragment_powf = [n, blinn_phong_coef](float t, float n_dot_l) {
+    return blinn_phong_coef * powf(std::max(t, 0.0f), n) * std::max(n_dot_l, 0.0f);
+  };
   for (int f = 0; f < *frames; ++f) {
     buffer.clear();
     std::vector<std::thread> workers;
@@ -110,24 +125,38 @@ int main(int argc, char** argv) {
     for (std::thread& worker : workers) worker.join();
     workers.clear();
     // Shading, tiles spread over the threads; each thread times its kernel calls only.
-    std::vector<double> kutlog_seconds(threads), pow_seconds(threads);
+    std::vector<double> kutlog_seconds(threads), pow_seconds(threads),
+        fragment_kutlog_seconds(threads), fragment_powf_seconds(threads);
     for (unsigned w = 0; w < threads; ++w)
       workers.emplace_back([&, w] {
         TileInputs in;
-        std::array<float, kTile * kTile> specular{}, baseline{};
+        std::array<float, kTile * kTile> specular{}, baseline{}, fragment{}, fragment_baseline{};
         for (int tile = int(w); tile < tiles_x * tiles_y; tile += int(threads)) {
           const int tx = tile % tiles_x, ty = tile / tiles_x;
           gather_tile(mesh, buffer, camera, to_light, tx, ty, in);
           const auto start = std::chrono::steady_clock::now();
           // Both from the same cosines: coef F(N.H) max(N.L, 0) against (N.H)^n max(N.L, 0).
           kutlog::shade(lobe, in.t.data(), in.n_dot_l.data(), specular.data(), specular.size(),
-                        in.covered.data());
+                        in.covered.data(), normalized);
           const auto middle = std::chrono::steady_clock::now();
           kutlog::blinn_phong_xsimd(in.t.data(), baseline.data(), baseline.size(), n);
           for (int lane = 0; lane < kTile * kTile; ++lane) baseline[lane] *= std::max(in.n_dot_l[lane], 0.0f);
           const auto end = std::chrono::steady_clock::now();
           kutlog_seconds[w] += std::chrono::duration<double>(middle - start).count();
           pow_seconds[w] += std::chrono::duration<double>(end - middle).count();
+          // The shape most software rasterizers have: a fragment function per covered pixel,
+          // kutlog's scalar eval against the powf it replaces.
+          const auto fragment_start = std::chrono::steady_clock::now();
+          for (int lane = 0; lane < kTile * kTile; ++lane)
+            if (in.covered[lane]) fragment[lane] = fragment_kutlog(in.t[lane], in.n_dot_l[lane]);
+          const auto fragment_middle = std::chrono::steady_clock::now();
+          for (int lane = 0; lane < kTile * kTile; ++lane)
+            if (in.covered[lane]) fragment_baseline[lane] = fragment_powf(in.t[lane], in.n_dot_l[lane]);
+          const auto fragment_end = std::chrono::steady_clock::now();
+          fragment_kutlog_seconds[w] +=
+              std::chrono::duration<double>(fragment_middle - fragment_start).count();
+          fragment_powf_seconds[w] +=
+              std::chrono::duration<double>(fragment_end - fragment_middle).count();
           for (int j = 0; j < kTile; ++j)
             for (int i = 0; i < kTile; ++i) {
               const int x = tx * kTile + i, y = ty * kTile + j, lane = j * kTile + i;
@@ -142,6 +171,10 @@ int main(int argc, char** argv) {
     // Wall time of the shading kernels: the threads run them in parallel.
     kutlog_ms.push_back(1e3 * *std::max_element(kutlog_seconds.begin(), kutlog_seconds.end()));
     pow_ms.push_back(1e3 * *std::max_element(pow_seconds.begin(), pow_seconds.end()));
+    fragment_kutlog_ms.push_back(
+        1e3 * *std::max_element(fragment_kutlog_seconds.begin(), fragment_kutlog_seconds.end()));
+    fragment_powf_ms.push_back(
+        1e3 * *std::max_element(fragment_powf_seconds.begin(), fragment_powf_seconds.end()));
   }
   OIIO::ImageBuf out(OIIO::ImageSpec(*width, *height, 1, OIIO::TypeDesc::FLOAT), image.data());
   // For viewing: 2x / (1 + x), white at radiance 1.
@@ -154,5 +187,8 @@ int main(int argc, char** argv) {
   std::printf("frame %dx%d, Utah teapot %zu triangles, %u threads, median of %d frames, wrote %s\n",
               *width, *height, mesh.triangles.size(), threads, *frames, output);
   std::printf("shading ms/frame: kutlog=%.3f pow_xsimd=%.3f ratio=%.2f\n", k_ms, p_ms, p_ms / k_ms);
+  const double fk_ms = median(fragment_kutlog_ms), fp_ms = median(fragment_powf_ms);
+  std::printf("per-fragment shading ms/frame: kutlog=%.3f powf=%.3f ratio=%.2f\n", fk_ms, fp_ms,
+              fp_ms / fk_ms);
   return 0;
 }
