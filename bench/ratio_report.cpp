@@ -3,6 +3,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <utility>
 
 namespace kutlog::bench {
 
@@ -41,7 +42,8 @@ void RatioCollector::load_json(const std::string& path) {
 
 void RatioCollector::print_ratios(std::FILE* out) const {
   const bool math = print_math_ratios(out), lobes = print_lobe_ratios(out);
-  if (!math && !lobes)
+  const bool shapes = print_call_shape_ratios(out);
+  if (!math && !lobes && !shapes)
     std::fputs("kutlog-bench: no ratios: the run has no kernel together with its peer "
                "(math/<f>/kutlog_u10 with xsimd, or lobe/... with pow_xsimd at the same n)\n",
                out);
@@ -80,6 +82,47 @@ bool RatioCollector::print_lobe_ratios(std::FILE* out) const {
       }
     }
   return header;
+}
+
+bool RatioCollector::print_call_shape_ratios(std::FILE* out) const {
+  // Per fragment: ns per call of each fragment function, and kutlog's speed-up over each peer.
+  bool printed = false;
+  for (int k : {3, 5}) {
+    const std::string at = "/n:1000/k:" + std::to_string(k);
+    const double kutlog = rate("fragment/scalar_kutlog" + at), fast = rate("fragment/scalar_kutlog_fast" + at);
+    const double powf = rate("fragment/scalar_powf" + at), pow_double = rate("fragment/scalar_pow_double" + at);
+    if (kutlog == 0 || powf == 0 || pow_double == 0) continue;
+    if (!printed)
+      std::fprintf(out,
+                   "\n| per fragment, n = 1000 | k | ns/call | powf / it | pow(double) / it |\n"
+                   "|---|---:|---:|---:|---:|\n");
+    printed = true;
+    for (auto [name, rate_of] : {std::pair{"scalar_kutlog", kutlog}, std::pair{"scalar_kutlog_fast", fast},
+                                 std::pair{"scalar_powf", powf}, std::pair{"scalar_pow_double", pow_double}})
+      std::fprintf(out, "| %s | %d | %.2f | %.2fx | %.2fx |\n", name, k, 1e9 / rate_of,
+                   rate_of / powf, rate_of / pow_double);
+  }
+  // Spans: ns per element of the array eval at each span length, and its cost over that of
+  // a 4096 span.
+  bool spans = false;
+  for (const char* arch : {"avx512", "avx2", "sse4.1"})
+    for (const char* kernel : {"kutlog_precise", "kutlog_fast"})
+      for (int k : {3, 5}) {
+        const std::string name = std::string("span/") + kernel + "/n:1000/k:" + std::to_string(k);
+        const std::string tail = std::string("/arch:") + arch;
+        const double whole = rate(name + "/count:4096" + tail);
+        if (whole == 0) continue;
+        if (!spans)
+          std::fprintf(out, "\n| span, n = 1000 | arch | k | ns/element at 1 / 16 / 157 / 4096 | "
+                            "cost over 4096's at 1 / 16 / 157 |\n|---|---|---:|---|---|\n");
+        spans = printed = true;
+        const double one = rate(name + "/count:1" + tail), sixteen = rate(name + "/count:16" + tail),
+                     span157 = rate(name + "/count:157" + tail);
+        std::fprintf(out, "| %s | %s | %d | %.2f / %.3f / %.3f / %.3f | %.1fx / %.2fx / %.2fx |\n",
+                     kernel, arch, k, 1e9 / one, 1e9 / sixteen, 1e9 / span157, 1e9 / whole,
+                     whole / one, whole / sixteen, whole / span157);
+      }
+  return printed;
 }
 
 bool RatioCollector::print_math_ratios(std::FILE* out) const {

@@ -26,7 +26,8 @@ class RatioCollector : public benchmark::BenchmarkReporter {
   // std::runtime_error naming the file if it cannot be read or parsed.
   void load_json(const std::string& path);
   // Prints the ratio tables (markdown) of the kernels measured in this run: math kernels
-  // against xsimd and std, lobes against pow_xsimd at the same n and arch.
+  // against xsimd and std, lobes against pow_xsimd at the same n and arch, the per-fragment
+  // eval against powf and pow(double), spans against a 4096 array.
   void print_ratios(std::FILE* out) const;
 
  private:
@@ -34,6 +35,7 @@ class RatioCollector : public benchmark::BenchmarkReporter {
   // Each prints its table if the run has something for it, and says whether it did.
   bool print_math_ratios(std::FILE* out) const;
   bool print_lobe_ratios(std::FILE* out) const;
+  bool print_call_shape_ratios(std::FILE* out) const;
 
   std::unique_ptr<benchmark::BenchmarkReporter> display_;
   std::map<std::string, double> throughput_;

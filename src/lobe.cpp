@@ -196,8 +196,10 @@ float simulate_polynomial(const LobeKernel& kernel, float t) {
   const float w = 1.0f - clamped, s = kernel.center_t - clamped;
   float q = kernel.q_f[kernel.degree];
   for (int i = kernel.degree; i-- > 0;) q = simulated_mul_add<kFused>(q, s, kernel.q_f[i]);
-  const float value = t <= kernel.t_cut ? 0.0f : simulated_mul_add<kFused>(-w, q, kernel.scale_f);
-  return clamp_zero_to(value, kernel.scale_f);
+  const float value = kernel.scale_lo != 0
+                          ? kernel.scale_f + simulated_mul_add<kFused>(-w, q, kernel.scale_lo)
+                          : simulated_mul_add<kFused>(-w, q, kernel.scale_f);
+  return clamp_zero_to(t <= kernel.t_cut ? 0.0f : value, kernel.scale_f);
 }
 
 template <bool kFused>
@@ -233,6 +235,7 @@ LobeKernel fit_kernel(const ref::KutlogLobe& reference, const Shape& shape, doub
   kernel.t_cut = detail::float_at_or_below_cut(cut);
   kernel.scale_f = float(scale);
   kernel.scale_d = scale;
+  const float scale_lo = float(scale - double(kernel.scale_f));
   kernel.k = shape.k;
   // No float below 1 on the support (n from about 1e7 up, by k and Q): F is the peak at
   // t >= 1 and 0 below, which q = 0 gives exactly. A fit there divides by the support's width
@@ -259,7 +262,15 @@ LobeKernel fit_kernel(const ref::KutlogLobe& reference, const Shape& shape, doub
       kernel.q_d[i] = double(scale * q[i]);
       kernel.q_f[i] = float(kernel.q_d[i]);
     }
+    // The scale whole, else split (scale_f + (scale_lo - w q): one more rounding, of a term
+    // smaller than the output, against scale_f's whole rounding error in a lower binade).
+    kernel.scale_lo = 0;
     if (meets(points, target, scale, kernel, arithmetic)) return kernel;
+    kernel.scale_lo = scale_lo;
+    if (scale_lo != 0 && arithmetic != Arithmetic::scalar &&
+        meets(points, target, scale, kernel, arithmetic))
+      return kernel;
+    kernel.scale_lo = 0;
   }
   // Otherwise B^k in double, B = cos(c theta) = 1 - w q(w), which converges for every lobe.
   kernel.form = LobeKernel::Form::base_power;

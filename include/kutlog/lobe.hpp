@@ -52,7 +52,8 @@ enum class Arithmetic : std::uint8_t { unfused, fused, scalar };
 struct LobeKernel {
   static constexpr int kMaxDegree = 24;
   enum class Form : std::uint8_t {
-    polynomial,  // P = 1 - w q(s), s = center_t - min(t, 1); SIMD: q in float lanes
+    polynomial,  // P = 1 - w q(s), s = center_t - min(t, 1); SIMD: q in float lanes, scale
+                 // split in scale_f + scale_lo
     base_power,  // P = (1 - w q(w))^k; SIMD: q and the power in double lanes
   };
   Form form = Form::polynomial;
@@ -61,6 +62,10 @@ struct LobeKernel {
   float t_cut = 0;
   float center_t = 1;  // polynomial: q's powers are of center_t - t; center_t ~ cos(gran)
   float scale_f = 1;
+  // scale - scale_f, as a float: where it is not 0 (normalized lobes), the SIMD polynomial form
+  // adds it to - w q before the peak, scale_f + (scale_lo - w q), so that scale_f's rounding
+  // does not count whole where the output is in a lower binade than the peak.
+  float scale_lo = 0;
   double scale_d = 1;
   std::array<float, kMaxDegree + 1> q_f{};   // SIMD polynomial form, times scale
   std::array<double, kMaxDegree + 1> q_d{};  // base_power form; scalar: both forms, times scale

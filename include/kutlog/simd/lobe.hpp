@@ -48,7 +48,8 @@ class PreparedLobe {
 
   // Broadcasts only the coefficients the degree uses: a small span pays for nothing else.
   explicit PreparedLobe(const LobeKernel& kernel)
-      : kernel_(kernel), t_cut_(kernel.t_cut), center_(kernel.center_t), scale_(kernel.scale_f) {
+      : kernel_(kernel), t_cut_(kernel.t_cut), center_(kernel.center_t), scale_(kernel.scale_f),
+        scale_lo_(kernel.scale_lo), split_scale_(kernel.scale_lo != 0) {
     const int degree = kDegree >= 0 ? kDegree : kernel.degree;
     for (int i = 0; i <= degree && i <= LobeKernel::kMaxDegree; ++i) q_[i] = F(kernel.q_f[i]);
   }
@@ -81,13 +82,18 @@ class PreparedLobe {
     return cut_at(t, w, q);
   }
 
-  // scale - w q where t > t_cut (or t is NaN), else 0. AVX-512 does it in one masked FMA.
+  // scale - w q, or scale + (scale_lo - w q), where t > t_cut (or t is NaN), else 0. AVX-512
+  // does it in one masked FMA (or add).
   F cut_at(F t, F w, F q) const {
 #if XSIMD_WITH_AVX512F
-    if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>)
-      return _mm512_maskz_fnmadd_ps(_mm512_cmp_ps_mask(t, t_cut_, _CMP_NLE_UQ), w, q, scale_);
+    if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
+      const __mmask16 above = _mm512_cmp_ps_mask(t, t_cut_, _CMP_NLE_UQ);
+      if (split_scale_) return _mm512_maskz_add_ps(above, scale_, neg_mul_add(w, q, scale_lo_));
+      return _mm512_maskz_fnmadd_ps(above, w, q, scale_);
+    }
 #endif
-    return xsimd::select(t <= t_cut_, F(0.0f), neg_mul_add(w, q, scale_));
+    const F value = split_scale_ ? scale_ + neg_mul_add(w, q, scale_lo_) : neg_mul_add(w, q, scale_);
+    return xsimd::select(t <= t_cut_, F(0.0f), value);
   }
 
   // scale (1 - w q(w))^k in double lanes, one rounding to float.
@@ -103,7 +109,8 @@ class PreparedLobe {
   }
 
   const LobeKernel& kernel_;
-  F t_cut_, center_, scale_;
+  F t_cut_, center_, scale_, scale_lo_;
+  bool split_scale_;
   std::array<F, (kDegree >= 0 ? kDegree : LobeKernel::kMaxDegree) + 1> q_;  // [0, degree] set
 };
 
