@@ -271,8 +271,10 @@ class LobeExhaustive : public testing::TestWithParam<Arch> {
 };
 TEST_P(LobeExhaustive, AccuracyGridEveryFloat) { expect_grid_within_bounds(1); }
 TEST(LobeSimulationExhaustive, IsTheKernelBitForBitOnWideSupports) {
-  // Supports of 2^21 to 2^25 floats, with base_power kernels with and without FMA.
-  expect_simulation_is_the_kernel({{1.5, 1, 0.1}, {6, 1, 0.5}, {4, 1, 0.9}});
+  // Supports of 2^21 to 2^25 floats, with base_power kernels with and without FMA; the quick
+  // test's lobes for the other forms.
+  expect_simulation_is_the_kernel(
+      {{1.5, 1, 0.1}, {6, 1, 0.5}, {4, 1, 0.9}, {1000, 3, 0.9}, {300, 5, 0.5}, {100, 5, 0.9}});
 }
 TEST_P(LobeExhaustive, PerLaneRandomMaterials) {
   unsigned seed = 1;
