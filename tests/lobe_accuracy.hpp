@@ -85,6 +85,18 @@ inline tools::LobeSweep dense_sweep(const Lobe& lobe, double support_samples, do
   return {stride(cut, support_samples), stride(tools::epicenter_edge(lobe), epicenter_samples)};
 }
 
+// Random lobes (random_lobes(count, seed)), each swept through `evaluate` with about
+// `support_samples` floats of its support and `epicenter_samples` of its epicenter.
+inline void expect_random_lobes_within_bounds(int count, unsigned seed, double support_samples,
+                                              double epicenter_samples,
+                                              tools::LobeEvaluator evaluate = tools::evaluate_array) {
+  for (const LobeCase& c : random_lobes(count, seed)) {
+    const Lobe lobe(c.n, c.k, c.Q);
+    expect_within_bounds(lobe, tools::measure_lobe(lobe, dense_sweep(lobe, support_samples, epicenter_samples),
+                                                   evaluate));
+  }
+}
+
 // How a per-lane lobe is called: the array function or the scalar eval per lane.
 using PerLaneEvaluator = void (*)(const PerLaneLobe& lobe, Normalization normalization,
                                   const float* t, const float* n, float* out, std::size_t count);

@@ -58,10 +58,7 @@ TEST_P(LobePerArch, DataRulePeakCutoffNegativeNaN) {
 // up to 2^21 of them (strided beyond). LobeExhaustive sweeps twice as many lobes, 8 times as
 // densely.
 TEST_P(LobePerArch, RandomLobesWithinBoundsAndBetweenZeroAndPeak) {
-  for (const LobeCase& c : random_lobes(12, 2026)) {
-    const Lobe lobe(c.n, c.k, c.Q);
-    expect_within_bounds(lobe, tools::measure_lobe(lobe, dense_sweep(lobe, 0x1p18, 0x1p21)));
-  }
+  expect_random_lobes_within_bounds(12, 2026, 0x1p18, 0x1p21);
 }
 
 TEST_P(LobePerArch, BaselinesAgainstTheReference) {
@@ -280,12 +277,7 @@ TEST_P(LobeExhaustive, PerLaneRandomMaterials) {
   unsigned seed = 1;
   for (const PerLaneCase& c : per_lane_materials(400, 2027)) expect_per_lane_within_bounds(c, seed++, 1 << 14);
 }
-TEST_P(LobeExhaustive, RandomLobesDensely) {
-  for (const LobeCase& c : random_lobes(24, 2027)) {
-    const Lobe lobe(c.n, c.k, c.Q);
-    expect_within_bounds(lobe, tools::measure_lobe(lobe, dense_sweep(lobe, 0x1p21, 0x1p24)));
-  }
-}
+TEST_P(LobeExhaustive, RandomLobesDensely) { expect_random_lobes_within_bounds(24, 2027, 0x1p21, 0x1p24); }
 INSTANTIATE_TEST_SUITE_P(Arch, LobeExhaustive, testing::ValuesIn(supported_archs()),
                          arch_test_name);
 

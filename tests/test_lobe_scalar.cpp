@@ -27,11 +27,7 @@ void evaluate_per_lane_scalar_here(const PerLaneLobe& lobe, Normalization normal
 TEST(LobeScalar, AccuracyGridEvery97thFloat) { expect_grid_within_bounds(97, evaluate_scalar_here); }
 
 TEST(LobeScalar, RandomLobesWithinBoundsAndBetweenZeroAndPeak) {
-  for (const LobeCase& c : random_lobes(12, 2026)) {
-    const Lobe lobe(c.n, c.k, c.Q);
-    expect_within_bounds(lobe, tools::measure_lobe(lobe, dense_sweep(lobe, 0x1p18, 0x1p21),
-                                                   evaluate_scalar_here));
-  }
+  expect_random_lobes_within_bounds(12, 2026, 0x1p18, 0x1p21, evaluate_scalar_here);
 }
 
 TEST(LobeScalar, PerLaneMaterialsWithinBoundsAndBetweenZeroAndPeak) {
@@ -70,11 +66,7 @@ TEST(LobeScalar, DataRuleAsTheArrays) {
 // Every float of [-1, 1] on the grid, and random lobes densely (labelled `exhaustive`).
 TEST(LobeScalarExhaustive, AccuracyGridEveryFloat) { expect_grid_within_bounds(1, evaluate_scalar_here); }
 TEST(LobeScalarExhaustive, RandomLobesDensely) {
-  for (const LobeCase& c : random_lobes(24, 2027)) {
-    const Lobe lobe(c.n, c.k, c.Q);
-    expect_within_bounds(lobe, tools::measure_lobe(lobe, dense_sweep(lobe, 0x1p21, 0x1p24),
-                                                   evaluate_scalar_here));
-  }
+  expect_random_lobes_within_bounds(24, 2027, 0x1p21, 0x1p24, evaluate_scalar_here);
 }
 
 }  // namespace
