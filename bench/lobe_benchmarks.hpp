@@ -71,7 +71,9 @@ inline void register_lobe_benchmarks(Arch arch) {
         std::vector<float> exponents = uniform_inputs(std::log(n / 2.0f), std::log(2.0f * n), 2);
         for (float& e : exponents) e = std::max(float(k), std::exp(e));
         run_array(state, arch, lobe_inputs(Lobe(n, k, kLobeAnchor)), exponents,
-                  [&](const float* x, const float* y, float* out) { lobe.eval(x, y, out, N); });
+                  [&](const float* x, const float* y, float* out) {
+                    lobe.eval(x, y, out, N, Normalization::exact_coef);
+                  });
       });
     }
     const std::vector<float> t = lobe_inputs(Lobe(n, 1, kLobeAnchor));
