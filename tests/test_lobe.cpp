@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <limits>
 #include <random>
-#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,8 +19,6 @@
 #include "expect_invalid.hpp"
 #include "lobe_accuracy.hpp"
 #include "lobe_case.hpp"
-#include "arch/kernel_table.hpp"
-#include "lobe_simulation.hpp"
 #include "test_archs.hpp"
 
 namespace kutlog {
@@ -173,67 +170,6 @@ TEST_P(LobePerArch, HugeExponentsKeepTheDataRule) {
   }
 }
 
-// The setup accepts a kernel by simulating its arithmetic (src/lobe.cpp); that acceptance is
-// proof only if the simulation is what runs. Compared bit for bit with the array kernels on
-// every arch over every float of each lobe's support (every `stride`-th when larger), for
-// every kernel of the lobes, which must exercise both forms with and without FMA.
-void expect_simulation_is_the_kernel(const std::vector<LobeCase>& lobes) {
-  // Forms as the kernels run them: the polynomial with its scale whole or split, base_power.
-  const auto form_of = [](const LobeKernel& kernel) {
-    if (kernel.form == LobeKernel::Form::base_power) return std::string("base_power");
-    return std::string(kernel.scale_lo != 0 ? "polynomial, scale split" : "polynomial");
-  };
-  std::set<std::pair<std::string, bool>> compared;
-  std::set<bool> arithmetics;
-  for (Arch arch : supported_archs()) {
-    const ScopedArch forced(arch);
-    const bool fused = detail::active_kernel_table().fused_fma;
-    arithmetics.insert(fused);
-    for (const LobeCase& c : lobes) {
-      const Lobe lobe(c.n, c.k, c.Q);
-      const double cut = lobe.cutoff_angle() >= ref::pi / 2 ? 0 : std::cos(lobe.cutoff_angle());
-      for (Variant variant : tools::kLobeVariants)
-        for (Normalization normalization : tools::kLobeNormalizations) {
-          const LobeKernel& kernel = lobe.kernel(variant, normalization, fused);
-          compared.insert({form_of(kernel), fused});
-          std::size_t differences = 0;
-          float first = 0;
-          std::vector<float> t, out;
-          // From 64 floats below the cut to 1, in runs of 2^16, then past the peak.
-          const std::uint32_t last = tools::order_key(1.0f);
-          for (std::uint32_t key = tools::order_key(float(cut)) - 64; key <= last;) {
-            t.clear();
-            for (; key <= last && t.size() < (1 << 16); ++key) t.push_back(tools::float_of_order_key(key));
-            if (key > last) t.insert(t.end(), {1.5f, INFINITY});
-            out.resize(t.size());
-            lobe.eval(t.data(), out.data(), t.size(), variant, normalization);
-            for (std::size_t i = 0; i < t.size(); ++i)
-              if (std::bit_cast<std::uint32_t>(out[i]) !=
-                      std::bit_cast<std::uint32_t>(detail::simulate_lobe_kernel(kernel, fused, t[i])) &&
-                  differences++ == 0)
-                first = t[i];
-          }
-          EXPECT_EQ(differences, 0u)
-              << arch_name(arch) << " n=" << c.n << " k=" << c.k << " Q=" << c.Q << " form "
-              << form_of(kernel) << " degree " << kernel.degree << ", e.g. t = " << first
-              << ": simulation " << detail::simulate_lobe_kernel(kernel, fused, first);
-        }
-    }
-  }
-  for (bool fused : arithmetics)
-    for (const char* form : {"polynomial", "polynomial, scale split", "base_power"})
-      EXPECT_TRUE(compared.count({form, fused}))
-          << "no lobe exercised the form " << form << (fused ? " with" : " without") << " FMA";
-}
-
-// Together these exercise every form with and without FMA (the test checks that they do):
-// 300 has base_power with FMA, 30 without it on a support of 2^21 floats; 3e7 has no float
-// below 1 on its support.
-TEST(LobeSimulation, IsTheKernelBitForBit) {
-  expect_simulation_is_the_kernel(
-      {{1000, 3, 0.9}, {300, 5, 0.5}, {30, 2, 0.1}, {3e7, 1, 0.5}, {100, 5, 0.9}});
-}
-
 // One parameter order, n first; a k that is not an integer does not compile (Lobe(50, 0.5, 3)
 // used to truncate 0.5 to 0 and report "k = 0").
 static_assert(std::is_constructible_v<Lobe, double, int, double>);
@@ -267,12 +203,6 @@ class LobeExhaustive : public testing::TestWithParam<Arch> {
   ScopedArch forced{GetParam()};
 };
 TEST_P(LobeExhaustive, AccuracyGridEveryFloat) { expect_grid_within_bounds(1); }
-TEST(LobeSimulationExhaustive, IsTheKernelBitForBitOnWideSupports) {
-  // Supports of 2^21 to 2^25 floats, with base_power kernels with and without FMA; the quick
-  // test's lobes for the other forms.
-  expect_simulation_is_the_kernel(
-      {{1.5, 1, 0.1}, {6, 1, 0.5}, {4, 1, 0.9}, {1000, 3, 0.9}, {300, 5, 0.5}, {100, 5, 0.9}});
-}
 TEST_P(LobeExhaustive, PerLaneRandomMaterials) {
   unsigned seed = 1;
   for (const PerLaneCase& c : per_lane_materials(400, 2027)) expect_per_lane_within_bounds(c, seed++, 1 << 14);

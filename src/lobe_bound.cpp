@@ -1,0 +1,166 @@
+#include "lobe_bound.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace kutlog::detail {
+namespace {
+
+constexpr double kFloatUnit = 0x1p-24, kDoubleUnit = 0x1p-53;  // unit roundoffs
+// A rounding's absolute error below float's normal range: half the smallest subnormal.
+constexpr double kUnderflow = 0x1p-150;
+// The monomials are exact to long double's precision, not better: each counts as off by this.
+constexpr double kMonomialRelativeError = 0x1p-60;
+// Pieces of the support. More tighten the bound where the lobe's value changes within one
+// (the epicenter's ulp is taken at a piece's lowest value); these cost 1 us per kernel.
+constexpr int kPieces = 48;
+// Where the ulp bound applies: F >= 0.6 (kutlog/lobe.hpp).
+constexpr double kEpicenter = 0.6;
+
+// The error of rounding a value of magnitude at most m: half an ulp in float lanes (half of
+// unit m to unit m, by where m sits in its binade), unit m in double.
+struct Rounding {
+  bool to_float;
+  double operator()(double magnitude) const {
+    return to_float ? 0.5 * ulp_of_float(magnitude) : kDoubleUnit * magnitude + kUnderflow;
+  }
+};
+
+struct Interval {
+  double lo, hi;
+  double magnitude() const { return std::max(-lo, hi); }
+};
+Interval times(Interval a, Interval b) {
+  const double products[] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
+  return {*std::min_element(std::begin(products), std::end(products)),
+          *std::max_element(std::begin(products), std::end(products))};
+}
+
+// Horner's rule for sum c_i x^i with x in an interval, each operation rounded: bounds on the
+// magnitude of the exact value and on the error of the computed one against it. The exact
+// partial sums are carried as intervals, so each rounding is bounded by the ulp of what it
+// rounds there. A fused multiply-add rounds once, else the product rounds too.
+using Coefficients = std::array<double, LobeKernel::kMaxDegree + 1>;
+
+struct HornerBound {
+  double magnitude, error;
+};
+HornerBound horner_bound(const Coefficients& c, int degree, Interval x, Rounding round,
+                         bool product_rounded) {
+  const double x_magnitude = x.magnitude();
+  Interval partial{c[degree], c[degree]};
+  double error = 0;
+  for (int i = degree; i-- > 0;) {
+    const Interval product = times(partial, x);
+    double before_sum = error * x_magnitude;
+    if (product_rounded) before_sum += round(product.magnitude() + before_sum);
+    partial = {product.lo + c[i], product.hi + c[i]};
+    error = before_sum + round(partial.magnitude() + before_sum);
+  }
+  return {partial.magnitude(), error};
+}
+
+}  // namespace
+
+LobeProfile lobe_profile(const LobeShape& shape, double w_max) {
+  // Half the pieces on the epicenter, which ends at a piece's end: its ulp bound is tighter.
+  const double x_epicenter = std::acos(std::pow(kEpicenter, 1.0 / shape.k)) / shape.c;
+  // Rounded up: every t where F >= 0.6 is inside.
+  const double w_epicenter =
+      std::min(w_max, 2 * std::pow(std::sin(0.5 * x_epicenter), 2) * (1 + 0x1p-40));
+  LobeProfile profile;
+  profile.w_epicenter = w_epicenter;
+  const auto add = [&](double w) {
+    const double base = std::max(0.0, shape.base(w));
+    profile.w.push_back(w);
+    profile.base.push_back(base);
+    profile.value.push_back(std::pow(base, shape.k));
+  };
+  for (int j = 0; j < kPieces / 2; ++j) add(w_epicenter * j / (kPieces / 2));
+  for (int j = 0; j <= kPieces / 2; ++j) add(w_epicenter + (w_max - w_epicenter) * j / (kPieces / 2));
+  return profile;
+}
+
+CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
+                               const QuotientFit& fit, double scale, const LobeProfile& profile,
+                               const CertifiedError& limit) {
+  const bool polynomial = kernel.form == LobeKernel::Form::polynomial;
+  const bool float_lanes = polynomial && arithmetic != Arithmetic::scalar;
+  // The scalar path's multiply-adds are fused or not as the caller's flags decide: the
+  // unfused bound covers both.
+  const bool product_rounded = arithmetic != Arithmetic::fused || !float_lanes;
+  const double unit = float_lanes ? kFloatUnit : kDoubleUnit;
+  const Rounding round{float_lanes};
+  const int degree = kernel.degree;
+  const double coefficient_scale = polynomial ? scale : 1.0;
+  Coefficients stored{}, rounding{};
+  for (int i = 0; i <= degree; ++i) {
+    const Real exact = coefficient_scale * fit.monomials[i];
+    stored[i] = float_lanes ? double(kernel.q_f[i]) : kernel.q_d[i];
+    rounding[i] = double(std::fabs(Real(stored[i]) - exact)) +
+                  kMonomialRelativeError * double(std::fabs(exact));
+  }
+  // s = center_t - t = w - w_center (polynomial form), else the variable is w itself. In
+  // float, center_t - t is exact where Sterbenz's lemma holds: for every t of the support
+  // when center_t >= 1/2; 1 - t is exact for t >= 1/2.
+  const double w_center = polynomial ? 1.0 - double(kernel.center_t) : 0.0;
+  const bool s_rounded = float_lanes && kernel.center_t < 0.5f;
+  const bool split_scale = float_lanes && kernel.scale_lo != 0;
+  const double stored_scale = float_lanes ? double(kernel.scale_f) + double(kernel.scale_lo)
+                                          : kernel.scale_d;
+  // Clamping to scale_f moves an output by at most the distance of scale_f below scale.
+  const double clamp_error = std::max(0.0, scale - double(kernel.scale_f));
+
+  CertifiedError worst{0, 0};
+  for (std::size_t j = 0; j + 1 < profile.w.size(); ++j) {
+    const double w_hi = profile.w[j + 1];
+    // The variable's range on the piece (widened by its rounding, if rounded).
+    const double widening = s_rounded ? 2 * unit : 0;
+    const double x_lo = profile.w[j] - w_center, x_hi = w_hi - w_center;
+    const Interval x{x_lo - widening * std::fabs(x_lo), x_hi + widening * std::fabs(x_hi)};
+    const double sigma = x.magnitude();
+    const HornerBound horner = horner_bound(stored, degree, x, round, product_rounded);
+    double coefficient_error = 0, slope = 0, sigma_power = 1;  // slope: sum i |c_i| sigma^i
+    for (int i = 0; i <= degree; ++i, sigma_power *= sigma) {
+      coefficient_error += rounding[i] * sigma_power;
+      slope += i * std::fabs(stored[i]) * sigma_power;
+    }
+    // A rounded s moves p(s) by at most sum |c_i| sigma^i ((1 + unit)^i - 1).
+    const double input_error = s_rounded ? 1.001 * unit * slope : 0;
+    const double q_error =
+        coefficient_scale * fit.approximation_error + coefficient_error + horner.error + input_error;
+    const double q_magnitude = horner.magnitude + horner.error + input_error;
+    const double exact_hi = scale * profile.value[j];  // F decreases with w
+    double error;  // before the rounding to float
+    if (polynomial) {
+      const double w_rounding = float_lanes && w_hi > 0.5 ? unit * w_hi : 0;
+      const double w_q = (w_hi + w_rounding) * q_magnitude;
+      error = w_hi * q_error + w_rounding * q_magnitude + (product_rounded ? round(w_q) : 0) +
+              std::fabs(stored_scale - scale);
+      if (split_scale) error += round(std::fabs(kernel.scale_lo) + w_q);  // scale_lo - w q
+      if (!float_lanes) error += round(exact_hi + error);  // the double subtraction
+    } else {
+      // B = 1 - w q in double, B^k by squaring (at most 13 products for k <= 64), times scale.
+      const double w_q = w_hi * q_magnitude;
+      const double base_error = w_hi * q_error + unit * (w_q + 1 + w_q);
+      const double base_hi = profile.base[j] + base_error;
+      double power_hi = 1;  // base_hi^(k-1)
+      for (int e = 1; e < kernel.k; ++e) power_hi *= base_hi;
+      error = scale * (kernel.k * power_hi * base_error + 14 * unit * power_hi * base_hi) +
+              unit * scale * power_hi * base_hi;
+    }
+    error += 0.5 * ulp_of_float(exact_hi + error);
+    error = std::max(error, clamp_error) * (1 + 0x1p-40);  // and this computation's own roundings
+    if (std::isnan(error)) error = INFINITY;  // coefficients that overflow float
+    worst.abs_error = std::max(worst.abs_error, error / scale);
+    if (profile.w[j + 1] <= profile.w_epicenter) {
+      const double lowest = scale * std::max(kEpicenter, profile.value[j + 1]);
+      worst.epicenter_ulp = std::max(worst.epicenter_ulp, error / ulp_of_float(lowest));
+    }
+    if (worst.abs_error > limit.abs_error || worst.epicenter_ulp > limit.epicenter_ulp) break;
+  }
+  return worst;
+}
+
+}  // namespace kutlog::detail

@@ -1,0 +1,80 @@
+// A certified bound on the error of a lobe kernel (kutlog/lobe.hpp's LobeKernel), for the
+// setup of src/lobe.cpp: instead of checking a fit against the reference at thousands of
+// points, bound every error it can have, over every float t of the support, from the fit's
+// own error and the roundings of the arithmetic that will run it.
+//
+// The support w = 1 - t in [0, w_max] is cut into pieces; on each, the bound takes every term
+// at its worst (the powers of |s| and w at the piece's far end, the lobe's value at its ends),
+// so it holds for every t of the piece:
+//   approximation:  |q(w) - p(s)| <= the Chebyshev tail of the fit (src/polynomial_fit.hpp);
+//   coefficients:   each rounded to the kernel's precision;
+//   Horner's rule:  a running bound, one rounding per multiply and per add (unfused; a fused
+//                   multiply-add has only the add's, so one bound covers both);
+//   inputs:         w = 1 - t and s = center_t - t in float, exact where Sterbenz's lemma
+//                   holds, else rounded;
+//   the final ops:  scale - w q (or scale_f + (scale_lo - w q)), the rounding to float, the
+//                   clamp to [0, scale_f].
+// For the base_power form (B^k in double), the base's error reaches F multiplied by k B^(k-1).
+#pragma once
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "kutlog/lobe.hpp"
+#include "polynomial_fit.hpp"
+
+namespace kutlog::detail {
+
+// The lobe's shape against w = 1 - t, and 1 - shape without cancellation:
+// theta = acos(1 - w) = 2 asin(sqrt(w / 2)), 1 - cos^k(u) = -expm1(k log1p(-2 sin^2(u/2))).
+struct LobeShape {
+  double c;
+  int k;
+  double theta(double w) const { return 2 * std::asin(std::sqrt(0.5 * w)); }
+  double base(double w) const { return std::cos(c * theta(w)); }
+  double one_minus_power(double w, int power) const {
+    const double half_sine = std::sin(0.5 * c * theta(w));
+    return -std::expm1(power * std::log1p(-2 * half_sine * half_sine));
+  }
+};
+
+// The lobe at the ends of the pieces of its support: w ascending from 0 to w_max, the base
+// B = cos(c theta) and F = B^k decreasing; the epicenter (F >= 0.6) is w <= w_epicenter.
+struct LobeProfile {
+  std::vector<double> w, base, value;
+  double w_epicenter;
+};
+LobeProfile lobe_profile(const LobeShape& shape, double w_max);
+
+// A polynomial fit of q(w) = (1 - B^power) / w (power k: the polynomial form; 1: the base of
+// the base_power form): its exact monomials and a bound on |q - p| over the support.
+struct QuotientFit {
+  std::vector<Real> monomials;  // unscaled, in s = center_t - t (polynomial) or in w
+  double approximation_error;   // on the unscaled q
+};
+
+// The worst errors of a kernel over the support, in the units of the contract: |out - scale F|
+// relative to scale, and in ulps of the float scale F where F >= 0.6 (0 if no such t).
+struct CertifiedError {
+  double abs_error;
+  double epicenter_ulp;
+};
+
+// kernel: a kernel of either form, its coefficients set from fit.monomials (times scale in
+// the polynomial form); scale: the exact scale (coef or 1) that kernel.scale_f rounds.
+// Stops at the first piece past `limit` (then only that the error exceeds it is known).
+CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
+                               const QuotientFit& fit, double scale, const LobeProfile& profile,
+                               const CertifiedError& limit = {INFINITY, INFINITY});
+
+// The ulp of a float of magnitude `value` (subnormals included).
+// The setup calls it about a million times a second: the exponent is read from the bits.
+inline double ulp_of_float(double value) {
+  const int biased = int(std::bit_cast<std::uint64_t>(std::fabs(value)) >> 52);  // 0 for 0
+  const int exponent = std::max(biased - 1023, -126);
+  return std::bit_cast<double>(std::uint64_t(exponent - 23 + 1023) << 52);
+}
+
+}  // namespace kutlog::detail
