@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "kutlog/lobe.hpp"
 #include "kutlog/reference.hpp"
@@ -18,36 +19,79 @@ namespace {
 
 using detail::Real;
 
-// The lowest degree at which g's fit on [lo, hi], evaluated in float by Horner's rule in
-// x - center, has relative error at most `target` on a grid; none if no degree has.
-std::optional<int> fit_float(const std::function<Real(Real)>& g, double lo, double hi,
-                             double center, double target, PerLaneKernel::Coefficients& out) {
-  out.fill(0);
+struct FloatFit {
+  int degree = 0;
+  PerLaneKernel::Coefficients coefficients{};
+};
+
+// Whether the fit, evaluated in float by Horner's rule in x - center, is within `allowed` of
+// `exact` (relative) at every grid point; NaN (a fit that overflows float) is not.
+bool meets(const FloatFit& fit, const std::vector<double>& grid, const std::vector<double>& exact,
+           double center, double allowed) {
+  for (std::size_t j = 0; j < grid.size(); ++j) {
+    const float s = float(grid[j]) - float(center);
+    float value = fit.coefficients[fit.degree];
+    for (int i = fit.degree; i-- > 0;) value = std::fma(value, s, fit.coefficients[i]);
+    if (!(std::fabs(value - exact[j]) <= allowed * std::fabs(exact[j]))) return false;
+  }
+  return true;
+}
+
+// The lowest degree at which a truncation of g's Chebyshev series on [lo, hi], evaluated in
+// float by Horner's rule in x - center, has relative error at most `target` on a grid of 1025
+// points; none if no degree has, or if no series of degree 256 stands in for g.
+std::optional<FloatFit> fit_float(const std::function<Real(Real)>& g, double lo, double hi,
+                                  double center, double target) {
+  FloatFit fit;
   // A single point (n_min = n_max): its value. Interpolation nodes there would coincide.
   if (!(hi > lo)) {
-    out[0] = float(g(center));
-    return 0;
+    fit.coefficients[0] = float(g(center));
+    return fit;
   }
-  // Fits at `degree` into out; returns its largest error on the grid, infinite if NaN (a fit
-  // that overflows float).
-  const auto fit = [&](int degree) {
-    const std::vector<Real> q = detail::fit_monomials(g, lo, hi, center, degree);
-    for (int i = 0; i <= degree; ++i) out[i] = float(q[i]);
-    double worst = 0;
-    for (int j = 0; j <= 1024; ++j) {
-      const double x = lo + (hi - lo) * j / 1024;
-      const float s = float(x) - float(center);
-      float value = out[degree];
-      for (int i = degree; i-- > 0;) value = std::fma(value, s, out[i]);
-      const double exact = double(g(x));
-      const double error = std::fabs(value - exact) / std::fabs(exact);
-      if (!(error <= worst)) worst = std::isnan(error) ? INFINITY : error;
-    }
-    return worst;
-  };
-  for (int degree = 1; degree <= PerLaneKernel::kMaxDegree; ++degree)
-    if (fit(degree) <= target) return degree;
+  // The fits are checked against the series, not g: it costs 2 N + 1 calls of g (N = 8 or 16
+  // mostly) where g on the grid costs 1025 (ref::coef_exact takes 2 us at k = 64). The
+  // series' error e is allowed for twice over (it is measured where it peaks, and the sum in
+  // double on the grid adds its own rounding): a fit within `allowed` of the series is within
+  // allowed (1 + 2 e) + 2 e = target of g.
+  constexpr double kSeriesTolerance = 0x1p-32;
+  const detail::ChebyshevSeries series =
+      detail::chebyshev_series(g, lo, hi, kSeriesTolerance, 256);
+  if (!(series.measured_error <= kSeriesTolerance)) return std::nullopt;
+  constexpr double kSeriesError = 2 * kSeriesTolerance;
+  const double allowed = (target - kSeriesError) / (1 + kSeriesError);
+  constexpr int kGridIntervals = 1024;
+  std::vector<double> grid(kGridIntervals + 1);
+  for (int j = 0; j <= kGridIntervals; ++j) grid[j] = lo + (hi - lo) * j / kGridIntervals;
+  const std::vector<double> exact = series.values_at(grid);
+  const int max_degree = std::min(PerLaneKernel::kMaxDegree, int(series.coefficients.size()) - 1);
+  for (fit.degree = 1; fit.degree <= max_degree; ++fit.degree) {
+    const std::vector<Real> q = series.monomials(fit.degree, center);
+    for (int i = 0; i <= fit.degree; ++i) fit.coefficients[i] = float(q[i]);
+    if (meets(fit, grid, exact, center, allowed)) return fit;
+  }
   return std::nullopt;
+}
+
+constexpr double kTarget = 0x1p-23;
+constexpr float kVCut = float(ref::pi * ref::pi / 4);
+
+// The base B = cos(sqrt(v)) = 1 - v R(v) on [0, v_cut = (pi/2)^2], F = B^k. R's relative
+// error reaches B multiplied by v R = 1 - B <= 1, and F multiplied by k. (Fitting cos^k
+// directly needs degree 20 and more in float for k >= 3: its expansions cancel at one end or
+// the other.) R is the same for every material: fitted once.
+const FloatFit& base_fit() {
+  static const FloatFit fit = [] {
+    const std::optional<FloatFit> r = fit_float(
+        [](Real v) {
+          if (v < 1e-30L) return Real(0.5);
+          const Real half_sine = std::sin(std::sqrt(v) / 2);
+          return 2 * half_sine * half_sine / v;
+        },
+        0, double(kVCut), double(kVCut / 2), kTarget);
+    if (!r) throw std::logic_error("kutlog: no fit of (1 - cos(sqrt(v))) / v meets 2^-23");
+    return *r;
+  }();
+  return fit;
 }
 
 }  // namespace
@@ -80,46 +124,42 @@ PerLaneLobe::PerLaneLobe(double n_min, double n_max, int k, double Q) : k_(k), Q
   // A fit that misses is never kept: the material is refused. Seen only for a range of n too
   // wide for one polynomial in 1/n: c^2 / n changes its shape where ln(1/Q) / n passes 1,
   // so tiny Q with n over many decades (Q = 1e-300, n in [1, 10^38]).
-  const auto degree_or_refuse = [&](const char* what, std::optional<int> degree) {
-    if (degree) return *degree;
+  const auto fit_or_refuse = [&](const char* what, const std::optional<FloatFit>& fit) {
+    if (fit) return *fit;
     throw std::invalid_argument("kutlog: n_max = " + std::to_string(n_max) +
                                 " is invalid with n_min = " + std::to_string(n_min) + " and Q = " +
                                 std::to_string(Q) + ": the range is too wide for one "
                                 "PerLaneLobe (its fit of " + what + " misses 2^-23); split it "
                                 "over several PerLaneLobes");
   };
-  constexpr double kTarget = 0x1p-23;
   // c^2 / n = theta_k^2 y / acos(Q^y)^2 and coef / n = y coef(1/y): analytic in y.
-  kernel.h_degree = degree_or_refuse("c^2 / n", fit_float(
+  const FloatFit h = fit_or_refuse("c^2 / n", fit_float(
       [&](Real y) {
         const double theta_n = ref::acos_of_root(Q, double(1 / y));
         return Real(theta_k * theta_k) * y / Real(theta_n * theta_n);
       },
-      y_lo, y_hi, kernel.y_center, kTarget, kernel.h));
-  kernel.k_degree = degree_or_refuse("coef / n", fit_float(
+      y_lo, y_hi, kernel.y_center, kTarget));
+  kernel.h_degree = h.degree;
+  kernel.h = h.coefficients;
+  const FloatFit coef = fit_or_refuse("coef / n", fit_float(
       [&](Real y) { return y * Real(ref::coef_exact(double(1 / y), k, Q)); }, y_lo, y_hi,
-      kernel.y_center, kTarget, kernel.coef_k));
+      kernel.y_center, kTarget));
+  kernel.k_degree = coef.degree;
+  kernel.coef_k = coef.coefficients;
   // theta^2 / w = (2 asin(sqrt(w/2)))^2 / w, analytic up to w = 2.
-  kernel.g_degree = degree_or_refuse("acos(t)^2 / (1 - t)", fit_float(
+  const FloatFit g = fit_or_refuse("acos(t)^2 / (1 - t)", fit_float(
       [](Real w) {
         if (w < 1e-30L) return Real(2);
         const Real theta = 2 * std::asin(std::sqrt(w / 2));
         return theta * theta / w;
       },
-      0, std::max(w_max, 1e-6), 0, kTarget, kernel.g));
-  // The base B = cos(sqrt(v)) = 1 - v R(v) on [0, (pi/2)^2], F = B^k. R's relative error
-  // reaches B multiplied by v R = 1 - B <= 1, and F multiplied by k. (Fitting cos^k directly
-  // needs degree 20 and more in float for k >= 3: its expansions cancel at one end or the
-  // other.)
-  kernel.v_cut = float(ref::pi * ref::pi / 4);
+      0, std::max(w_max, 1e-6), 0, kTarget));
+  kernel.g_degree = g.degree;
+  kernel.g = g.coefficients;
+  kernel.v_cut = kVCut;
   kernel.v_center = kernel.v_cut / 2;
-  kernel.r_degree = degree_or_refuse("(1 - cos(sqrt(v))) / v", fit_float(
-      [](Real v) {
-        if (v < 1e-30L) return Real(0.5);
-        const Real half_sine = std::sin(std::sqrt(v) / 2);
-        return 2 * half_sine * half_sine / v;
-      },
-      0, double(kernel.v_cut), kernel.v_center, kTarget, kernel.r));
+  kernel.r_degree = base_fit().degree;
+  kernel.r = base_fit().coefficients;
   kernel.k = k;
 }
 

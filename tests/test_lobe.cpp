@@ -19,6 +19,7 @@
 #include "expect_invalid.hpp"
 #include "lobe_accuracy.hpp"
 #include "lobe_case.hpp"
+#include "polynomial_fit.hpp"
 #include "test_archs.hpp"
 
 namespace kutlog {
@@ -236,6 +237,42 @@ TEST(Lobe, ExtremeParametersStillMeetThePreciseBound) {
     const Lobe lobe(c.n, c.k, c.Q);
     expect_within_bounds(lobe, tools::measure_lobe(lobe, {4099, 1}));
   }
+}
+
+// PerLaneLobe checks its fits against Chebyshev series (src/polynomial_fit.hpp) in place of
+// the functions, trusting the error each series measures at its checking points, allowed for
+// twice: the series must stay within that on a grid 8 times as dense, it must not claim to
+// follow a g that no series of its degree follows, and its truncations must be the same
+// polynomials as monomials.
+TEST(PolynomialFit, ChebyshevSeriesMeasuresItsErrorAndTruncates) {
+  using detail::Real;
+  constexpr double kTolerance = 0x1p-32;
+  // Runge's function: analytic, but slow to converge (N = 128 here).
+  const auto runge = [](Real x) { return 1 / (1 + 25 * x * x); };
+  const detail::ChebyshevSeries series = detail::chebyshev_series(runge, -1, 1, kTolerance, 512);
+  EXPECT_LE(series.measured_error, kTolerance);
+  std::vector<double> grid;
+  for (int j = 0; j <= 8192; ++j) grid.push_back(-1 + j / 4096.0);
+  const std::vector<double> values = series.values_at(grid);
+  for (std::size_t j = 0; j < grid.size(); ++j)
+    EXPECT_LE(std::fabs(values[j] - double(runge(grid[j]))), 2 * kTolerance * double(runge(grid[j])))
+        << "x = " << grid[j];
+  // A kink: no series of degree 256 follows it to 2^-32.
+  const auto kink = [](Real x) { return 1 + std::fabs(x - Real(0.3)); };
+  EXPECT_GT(detail::chebyshev_series(kink, -1, 1, kTolerance, 256).measured_error, kTolerance);
+  // Truncations as monomials in x - center, center at an end of the interval as in the fits.
+  const Real lo = 0.5, hi = 2, center = 2;
+  const detail::ChebyshevSeries exp_series =
+      detail::chebyshev_series([](Real x) { return std::exp(x); }, lo, hi, kTolerance, 512);
+  for (int degree : {1, 4, int(exp_series.coefficients.size()) - 1})
+    for (Real x = lo; x <= hi; x += Real(0.125)) {
+      const std::vector<Real> q = exp_series.monomials(degree, center);
+      Real horner = 0, sum = 0;
+      for (int i = degree; i >= 0; --i) horner = horner * (x - center) + q[i];
+      const Real angle = std::acos((2 * x - lo - hi) / (hi - lo));
+      for (int j = 0; j <= degree; ++j) sum += exp_series.coefficients[j] * std::cos(j * angle);
+      EXPECT_NEAR(double(horner / sum), 1, 1e-15) << "degree " << degree << ", x = " << double(x);
+    }
 }
 
 }  // namespace
