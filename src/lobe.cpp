@@ -4,6 +4,7 @@
 #include "kutlog/lobe.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -85,37 +86,22 @@ bool meets(const LobeKernel& kernel, Arithmetic arithmetic, const detail::Quotie
   return error.abs_error <= target.abs_error && error.epicenter_ulp <= target.epicenter_ulp;
 }
 
-// The lowest-degree kernel for one variant and one arithmetic whose certified error meets the
-// target: in the polynomial form if one does (float lanes, fastest), else base_power.
-LobeKernel fit_kernel(const ref::KutlogLobe& reference, QuotientSeries& polynomial_series,
-                      const std::function<QuotientSeries&()>& base_series, double w_max,
-                      double scale, const detail::LobeProfile& profile, const Target& target,
-                      Arithmetic arithmetic) {
-  LobeKernel kernel;
-  // F = 0 for t <= cos(gran), and below the horizon (t <= 0) when gran > pi/2.
-  const double cut = reference.cutoff_angle() >= kPi / 2 ? 0.0 : std::cos(reference.cutoff_angle());
-  kernel.t_cut = detail::float_at_or_below_cut(cut);
-  kernel.scale_f = float(scale);
-  kernel.scale_d = scale;
-  const float scale_lo = float(scale - double(kernel.scale_f));
-  kernel.k = reference.k();
+// Multiplications of B^k by squaring (k = 5: B^2, B^4, B^4 B).
+int power_cost(int k) { return std::bit_width(unsigned(k)) + std::popcount(unsigned(k)) - 2; }
+
+// F = scale - w q(s), q in powers of s = center_t - t, the distance to the cut-off
+// (center_t ~ cos(gran)): near the cut-off, where scale - w q cancels, s p(s) vanishes and
+// only q's constant term is rounded; near t = 1 the errors of q are multiplied by w, small
+// there. The lowest degree whose certified error meets the target, if one does.
+std::optional<LobeKernel> fit_polynomial(LobeKernel kernel, QuotientSeries& series, double w_max,
+                                         double scale, const detail::LobeProfile& profile,
+                                         const Target& target, Arithmetic arithmetic) {
   kernel.form = LobeKernel::Form::polynomial;
-  kernel.center_t = float(1 - w_max);
-  // No float below 1 on the support (n from about 1e7 up, by k and Q): F is the peak at
-  // t >= 1 and 0 below, which q = 0 gives exactly. A fit there divides by the support's width
-  // and overflows float (and 0 * inf at t = 1 is NaN).
-  if (kernel.t_cut == std::nextafter(1.0f, 0.0f)) {
-    kernel.degree = 0;
-    return kernel;
-  }
-  // F = scale - w q(s), q in powers of s = center_t - t, the distance to the cut-off
-  // (center_t ~ cos(gran)): near the cut-off, where scale - w q cancels, s p(s) vanishes and
-  // only q's constant term is rounded; near t = 1 the errors of q are multiplied by w, small
-  // there. The approximation alone must leave room: w_max q's truncation error at least.
-  for (int degree = 1; degree <= 16; ++degree) {
-    if (!polynomial_series.converged()) break;
-    if (polynomial_series.truncation_error(degree) * w_max > target.abs_error) continue;
-    const detail::QuotientFit fit = *polynomial_series.fit(degree);
+  const float scale_lo = float(scale - double(kernel.scale_f));
+  for (int degree = 1; degree <= 16 && series.converged(); ++degree) {
+    // The approximation alone must leave room: w_max q's truncation error at least.
+    if (series.truncation_error(degree) * w_max > target.abs_error) continue;
+    const detail::QuotientFit fit = *series.fit(degree);
     kernel.degree = degree;
     for (int i = 0; i <= degree; ++i) {
       kernel.q_d[i] = double(scale * fit.monomials[i]);
@@ -131,11 +117,16 @@ LobeKernel fit_kernel(const ref::KutlogLobe& reference, QuotientSeries& polynomi
       return kernel;
     kernel.scale_lo = 0;
     // Once the fit's own error is negligible, a higher degree only adds roundings.
-    if (polynomial_series.truncation_error(degree) * w_max < 0x1p-8 * target.abs_error) break;
+    if (series.truncation_error(degree) * w_max < 0x1p-8 * target.abs_error) break;
   }
-  // Otherwise B^k in double, B = cos(c theta) = 1 - w q(w), which converges for every lobe.
+  return std::nullopt;
+}
+
+// B^k in double, B = cos(c theta) = 1 - w q(w), which converges for every lobe.
+std::optional<LobeKernel> fit_base_power(LobeKernel kernel, QuotientSeries& series, double w_max,
+                                         double scale, const detail::LobeProfile& profile,
+                                         const Target& target, Arithmetic arithmetic) {
   kernel.form = LobeKernel::Form::base_power;
-  QuotientSeries& series = base_series();
   for (int degree = 1; degree <= LobeKernel::kMaxDegree; ++degree) {
     // A base off by e puts F off by about k e near t = 1: a fit far from the target is skipped.
     if (series.converged() && series.truncation_error(degree) * w_max > target.abs_error) continue;
@@ -146,6 +137,41 @@ LobeKernel fit_kernel(const ref::KutlogLobe& reference, QuotientSeries& polynomi
     for (int i = 0; i <= degree; ++i) kernel.q_d[i] = double(fit->monomials[i]);
     if (meets(kernel, arithmetic, *fit, scale, profile, target)) return kernel;
   }
+  return std::nullopt;
+}
+
+// The kernel for one variant and one arithmetic: in SIMD lanes the polynomial form if it
+// meets the target (float lanes, fastest), else base_power (double lanes); in the scalar
+// path, both in double, whichever takes fewer operations.
+LobeKernel fit_kernel(const ref::KutlogLobe& reference, QuotientSeries& polynomial_series,
+                      const std::function<QuotientSeries&()>& base_series, double w_max,
+                      double scale, const detail::LobeProfile& profile, const Target& target,
+                      Arithmetic arithmetic) {
+  LobeKernel kernel;
+  // F = 0 for t <= cos(gran), and below the horizon (t <= 0) when gran > pi/2.
+  const double cut = reference.cutoff_angle() >= kPi / 2 ? 0.0 : std::cos(reference.cutoff_angle());
+  kernel.t_cut = detail::float_at_or_below_cut(cut);
+  kernel.scale_f = float(scale);
+  kernel.scale_d = scale;
+  kernel.k = reference.k();
+  kernel.center_t = float(1 - w_max);
+  // No float below 1 on the support (n from about 1e7 up, by k and Q): F is the peak at
+  // t >= 1 and 0 below, which q = 0 gives exactly. A fit there divides by the support's width
+  // and overflows float (and 0 * inf at t = 1 is NaN).
+  if (kernel.t_cut == std::nextafter(1.0f, 0.0f)) return kernel;
+  const std::optional<LobeKernel> polynomial =
+      fit_polynomial(kernel, polynomial_series, w_max, scale, profile, target, arithmetic);
+  // Beyond the same Horner steps and 1 - w q, the base costs the power, the scale and a
+  // switch on k (measured: k = 3 runs faster as a polynomial of degree 6 than as a base of
+  // degree 3, k = 5 slower as a polynomial of degree 8).
+  const int base_overhead = power_cost(kernel.k) + 2;
+  if (polynomial && (arithmetic != Arithmetic::scalar || polynomial->degree < 1 + base_overhead))
+    return *polynomial;
+  const std::optional<LobeKernel> base =
+      fit_base_power(kernel, base_series(), w_max, scale, profile, target, arithmetic);
+  if (polynomial && (!base || polynomial->degree < base->degree + base_overhead))
+    return *polynomial;
+  if (base) return *base;
   // Not seen on any lobe tried (tests/test_lobe.cpp: the grid and random lobes); a kernel
   // whose bound misses is never kept.
   throw std::runtime_error("kutlog: no kernel of Lobe(n = " + std::to_string(reference.n()) +

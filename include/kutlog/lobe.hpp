@@ -34,10 +34,12 @@
 // would turn the peak into inf and the rest into NaN); Normalization::none works for every n.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
+#include <utility>
 
 namespace kutlog {
 
@@ -73,29 +75,71 @@ struct LobeKernel {
   std::array<double, kMaxDegree + 1> q_d{};  // base_power form; scalar: both forms, times scale
 
   // The scalar path, in double: the value before its one rounding to float (meaningful for
-  // t > t_cut; finite elsewhere in [-1, 1], NaN for NaN).
-  double unrounded(float t) const {
-    const double clamped = t < 1.0f ? double(t) : 1.0, w = 1.0 - clamped;
-    const double x = form == Form::polynomial ? double(center_t) - clamped : w;
-    double q = q_d[degree];
-    for (int i = degree; i-- > 0;) q = q * x + q_d[i];
-    if (form == Form::polynomial) return scale_d - w * q;
-    double base = 1.0 - w * q, power = 1.0;
-    for (int e = k; e > 0; e >>= 1, base *= base)
-      if (e & 1) power *= base;
-    return scale_d * power;
+  // t > t_cut; finite elsewhere in [-1, 1], NaN for NaN). Always inlined, as evaluate: GCC
+  // would call them for their size, and the call costs a fragment loop a fifth of its time.
+  [[gnu::always_inline]] double unrounded(float t) const {
+    const double clamped = t < 1.0f ? double(t) : 1.0, w = 1.0 - clamped;  // NaN kept
+    if (form == Form::base_power) return base_power(w);
+    // Horner's rule unrolled for the polynomial form's degrees (the setup fits at most 16):
+    // a fragment loop runs a third fewer instructions than with a loop over the degree.
+    const double s = double(center_t) - clamped;
+    switch (degree) {
+      case 0: return scale_d - w * q_d[0];
+      case 1: return scale_d - w * horner<1>(s);
+      case 2: return scale_d - w * horner<2>(s);
+      case 3: return scale_d - w * horner<3>(s);
+      case 4: return scale_d - w * horner<4>(s);
+      case 5: return scale_d - w * horner<5>(s);
+      case 6: return scale_d - w * horner<6>(s);
+      case 7: return scale_d - w * horner<7>(s);
+      case 8: return scale_d - w * horner<8>(s);
+      case 9: return scale_d - w * horner<9>(s);
+      case 10: return scale_d - w * horner<10>(s);
+      case 11: return scale_d - w * horner<11>(s);
+      case 12: return scale_d - w * horner<12>(s);
+      default: return scale_d - w * horner(s);
+    }
   }
   // F(t) by the scalar path: 0 at or below t_cut, NaN for NaN, else unrounded(t) rounded to
   // float and clamped to [0, scale_f]. (A branch-free cut measured 4 to 8 times slower here:
   // the clamps then depend on the polynomial of every t, half of them past the cut.)
-  float evaluate(float t) const {
+  [[gnu::always_inline]] float evaluate(float t) const {
     if (!(t > t_cut)) return t == t ? 0.0f : t;
-    const float value = float(unrounded(t));
-    return value < 0.0f ? 0.0f : value > scale_f ? scale_f : value;
+    // Past the cut t is a number and so is the value: min and max clamp in one instruction each.
+    return std::min(std::max(float(unrounded(t)), 0.0f), scale_f);
   }
 
-
-
+ private:
+  template <int kDegree>
+  double horner(double x) const {
+    double q = q_d[kDegree];
+    [&]<int... i>(std::integer_sequence<int, i...>) {
+      ((q = q * x + q_d[kDegree - 1 - i]), ...);
+    }(std::make_integer_sequence<int, kDegree>());
+    return q;
+  }
+  double horner(double x) const {
+    double q = q_d[degree];
+    for (int i = degree; i-- > 0;) q = q * x + q_d[i];
+    return q;
+  }
+  // scale B^k by squaring, unrolled for the small k the scalar setup prefers this form for.
+  double base_power(double w) const {
+    const double base = 1.0 - w * horner(w), square = base * base;
+    switch (k) {
+      case 1: return scale_d * base;
+      case 2: return scale_d * square;
+      case 3: return scale_d * (square * base);
+      case 4: return scale_d * (square * square);
+      case 5: return scale_d * (square * square * base);
+      default: {
+        double power = 1.0, factor = base;
+        for (int e = k; e > 0; e >>= 1, factor *= factor)
+          if (e & 1) power *= factor;
+        return scale_d * power;
+      }
+    }
+  }
 };
 
 class Lobe {
