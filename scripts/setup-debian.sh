@@ -4,9 +4,9 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake
+  build-essential cmake python3
   libxsimd-dev libgtest-dev libbenchmark-dev libopenimageio-dev libmpfr-dev libcli11-dev
-  nlohmann-json3-dev
+  libfmt-dev nlohmann-json3-dev
   fonts-dejavu-core
   clang-14 libclang-rt-14-dev
 )

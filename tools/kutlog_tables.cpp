@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "common/cli.hpp"
 #include "common/table.hpp"
 #include "kutlog/article.hpp"
@@ -11,7 +13,6 @@
 
 namespace {
 
-using kutlog::tools::cell;
 using kutlog::tools::Table;
 namespace article = kutlog::article;
 namespace ref = kutlog::ref;
@@ -25,9 +26,10 @@ Table table1(bool with_difference) {
       const double Q = article::kTableQ[q], paper = article::table1_printed(q, j).value;
       const int k = article::kTableK[j];
       const double ours = article::table1_delta_percent(Q, k);
-      std::vector<std::string> row{cell("%.1f", Q), cell("%d", k), cell("%.3f", ours),
+      std::vector<std::string> row{fmt::format("{:.1f}", Q), fmt::to_string(k),
+                                   fmt::format("{:.3f}", ours),
                                    std::string(article::kTable1DeltaPercent[q][j])};
-      if (with_difference) row.push_back(cell("%+.3f", ours - paper));
+      if (with_difference) row.push_back(fmt::format("{:+.3f}", ours - paper));
       table.add_row(row);
     }
   return table;
@@ -43,10 +45,10 @@ Table table2(bool with_difference) {
       const double Q = article::kTableQ[q], paper = article::table2_printed(q, j).value;
       const int k = article::kTableK[j];
       const article::EnergyErrors ours = article::table2_energy_errors(Q, k);
-      std::vector<std::string> row{cell("%.1f", Q), cell("%d", k), cell("%.5f", ours.fit),
-                                   cell("%.3f", paper)};
-      if (with_difference) row.push_back(cell("%+.5f", ours.fit - paper));
-      row.push_back(cell("%.2e", ours.exact));
+      std::vector<std::string> row{fmt::format("{:.1f}", Q), fmt::to_string(k),
+                                   fmt::format("{:.5f}", ours.fit), fmt::format("{:.3f}", paper)};
+      if (with_difference) row.push_back(fmt::format("{:+.5f}", ours.fit - paper));
+      row.push_back(fmt::format("{:.2e}", ours.exact));
       table.add_row(row);
     }
   return table;
@@ -57,9 +59,10 @@ Table figure4() {
   for (const article::CoefSample& sample : article::kFigure4) {
     const double ours = ref::coef_exact(sample.n, sample.k, sample.Q);
     const bool agrees = std::fabs(ours - sample.printed_coef) <= article::kFigure4PrintedHalfUnit;
-    table.add_row({cell("%.1f", sample.Q), cell("%d", sample.k), cell("%g", sample.n),
-                   cell("%.6f", ours), cell("%.3f", sample.printed_coef),
-                   cell("%+.6f", ours - sample.printed_coef),
+    table.add_row({fmt::format("{:.1f}", sample.Q), fmt::to_string(sample.k),
+                   fmt::format("{:g}", sample.n), fmt::format("{:.6f}", ours),
+                   fmt::format("{:.3f}", sample.printed_coef),
+                   fmt::format("{:+.6f}", ours - sample.printed_coef),
                    sample.misprint ? "misprint" : (agrees ? "agrees" : "DISAGREES")});
   }
   return table;
@@ -73,9 +76,10 @@ Table coefficients(const std::vector<double>& n_list, const std::vector<int>& k_
       for (double n : n_list) {
         const ref::KutlogLobe lobe(n, k, Q);
         const double exact = lobe.coef_exact(), fit = lobe.coef_fit();
-        table.add_row({cell("%g", Q), cell("%d", k), cell("%g", n), cell("%.17g", exact),
-                       cell("%.17g", fit), cell("%.15f", lobe.energy(exact)),
-                       cell("%.15f", lobe.energy(fit))});
+        table.add_row({fmt::format("{:g}", Q), fmt::to_string(k), fmt::format("{:g}", n),
+                       fmt::format("{:.17g}", exact), fmt::format("{:.17g}", fit),
+                       fmt::format("{:.15f}", lobe.energy(exact)),
+                       fmt::format("{:.15f}", lobe.energy(fit))});
       }
   return table;
 }

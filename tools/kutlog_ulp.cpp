@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "common/cli.hpp"
 #include "common/lobe_errors.hpp"
 #include "common/plot.hpp"
@@ -24,8 +26,8 @@ struct Row {
 };
 
 std::string format_input(const ErrorStats& stats) {
-  if (std::isnan(stats.worst_y)) return cell("%.9g", stats.worst_x);
-  return cell("x=%.9g;y=%.9g", stats.worst_x, stats.worst_y);
+  if (std::isnan(stats.worst_y)) return fmt::format("{:.9g}", stats.worst_x);
+  return fmt::format("x={:.9g};y={:.9g}", stats.worst_x, stats.worst_y);
 }
 
 // The maximal error per input bucket of every row, a series each, with the bound.
@@ -49,8 +51,8 @@ void draw_errors(const std::vector<Row>& rows, const std::vector<std::string>& f
     }
     plot.points(function == "pow" ? row.function + " " + row.arch : row.arch, xs, ys);
   }
-  plot.hline(bound->max_ulp, cell("bound %.2f ULP", bound->max_ulp))
-      .hline(bound->promised_ulp, cell("promise %.1f ULP", bound->promised_ulp));
+  plot.hline(bound->max_ulp, fmt::format("bound {:.2f} ULP", bound->max_ulp))
+      .hline(bound->promised_ulp, fmt::format("promise {:.1f} ULP", bound->promised_ulp));
   plot.save(path);
   std::fprintf(stderr, "kutlog-ulp: wrote %s\n", path.c_str());
 }
@@ -72,9 +74,10 @@ void print_summary(const std::vector<Row>& rows, const std::vector<std::string>&
       if (archs.find(row.arch) == std::string::npos) archs += (archs.empty() ? "" : " ") + row.arch;
     }
     table.add_row({std::string(bound->kernel), std::string(bound->domain),
-                   cell("%.1f", bound->promised_ulp), cell("%.2f", bound->max_ulp),
-                   cell("%.4f", merged.max_ulp), format_input(merged), archs,
-                   cell("%.3g", double(merged.inputs))});
+                   fmt::format("{:.1f}", bound->promised_ulp),
+                   fmt::format("{:.2f}", bound->max_ulp), fmt::format("{:.4f}", merged.max_ulp),
+                   format_input(merged), archs,
+                   fmt::format("{:.3g}", double(merged.inputs))});
   }
   table.print(format);
 }
@@ -112,11 +115,14 @@ int measure_lobes(const std::vector<kutlog::Arch>& archs, const std::vector<std:
             if (std::find(variants.begin(), variants.end(), variant) == variants.end()) continue;
             const LobeErrors& e = errors[i];
             table.add_row({i % 2 ? "kutlog_normalized" : "kutlog",
-                           std::string(kutlog::arch_name(arch)), variant, cell("%g", n),
-                           cell("%d", k), cell("%g", Q), cell("%.3g", e.max_abs_error),
-                           cell("%.3f", e.max_epicenter_ulp),
-                           cell("%.9g", e.max_abs_error > 0 ? e.worst_abs_input : e.worst_ulp_input),
-                           cell("%.9g", e.min_output), cell("%.9g", e.max_output)});
+                           std::string(kutlog::arch_name(arch)), variant,
+                           fmt::format("{:g}", n), fmt::to_string(k), fmt::format("{:g}", Q),
+                           fmt::format("{:.3g}", e.max_abs_error),
+                           fmt::format("{:.3f}", e.max_epicenter_ulp),
+                           fmt::format("{:.9g}", e.max_abs_error > 0 ? e.worst_abs_input
+                                                                     : e.worst_ulp_input),
+                           fmt::format("{:.9g}", e.min_output),
+                           fmt::format("{:.9g}", e.max_output)});
           }
         }
   }
@@ -228,9 +234,10 @@ int main(int argc, char** argv) {
           continue;
         }
         for (float y : kPowSweepExponents)
-          add_row(cell("pow[y=%g]", y), [&](const SweepOptions& o) { return sweep_pow_exponent(y, o); });
+          add_row(fmt::format("pow[y={:g}]", y),
+                  [&](const SweepOptions& o) { return sweep_pow_exponent(y, o); });
         if (plot_path.empty())
-          add_row(cell("pow[random %llu]", (unsigned long long)random_pairs),
+          add_row(fmt::format("pow[random {}]", random_pairs),
                   [&](const SweepOptions& o) { return sweep_pow_random(random_pairs, 1, o); });
       }
     }
@@ -243,9 +250,9 @@ int main(int argc, char** argv) {
     }
     Table table({"function", "arch", "variant", "max_ulp", "worst_input", "mean_ulp", "inputs"});
     for (const Row& row : rows)
-      table.add_row({row.function, row.arch, row.variant, cell("%.4f", row.stats.max_ulp),
-                     format_input(row.stats), cell("%.4f", row.stats.mean_ulp()),
-                     cell("%llu", (unsigned long long)row.stats.inputs)});
+      table.add_row({row.function, row.arch, row.variant, fmt::format("{:.4f}", row.stats.max_ulp),
+                     format_input(row.stats), fmt::format("{:.4f}", row.stats.mean_ulp()),
+                     fmt::to_string(row.stats.inputs)});
     table.print(format);
     return 0;
   });

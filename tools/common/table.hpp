@@ -1,14 +1,30 @@
 // A table printed as aligned text for people or as CSV for programs: one code path per tool.
 #pragma once
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace kutlog::tools {
 
 enum class Format { text, csv, markdown };
+
+// A CSV field as RFC 4180 writes it: a field holding a comma, a quote or a line break (a domain
+// such as "[-1, 1]") is quoted, with its quotes doubled, so that it stays one field; any other
+// field is written as it is.
+inline std::string csv_field(std::string_view text) {
+  if (text.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(text);
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '"') quoted += '"';
+    quoted += c;
+  }
+  return quoted + '"';
+}
 
 class Table {
  public:
@@ -40,18 +56,17 @@ class Table {
  private:
   static void print_csv_row(const std::vector<std::string>& row, std::FILE* out) {
     for (std::size_t i = 0; i < row.size(); ++i)
-      std::fprintf(out, "%s%s", i ? "," : "", row[i].c_str());
-    std::fputc('\n', out);
+      fmt::print(out, "{}{}", i ? "," : "", csv_field(row[i]));
+    fmt::print(out, "\n");
   }
   static void print_markdown_row(const std::vector<std::string>& row, std::FILE* out) {
-    for (const std::string& cell : row) std::fprintf(out, "| %s ", cell.c_str());
-    std::fputs("|\n", out);
+    fmt::print(out, "| {} |\n", fmt::join(row, " | "));
   }
   static void print_text_row(const std::vector<std::string>& row,
                              const std::vector<std::size_t>& widths, std::FILE* out) {
     for (std::size_t i = 0; i < row.size(); ++i)
-      std::fprintf(out, "%s%*s", i ? "  " : "", static_cast<int>(widths[i]), row[i].c_str());
-    std::fputc('\n', out);
+      fmt::print(out, "{}{:>{}}", i ? "  " : "", row[i], widths[i]);
+    fmt::print(out, "\n");
   }
 
   std::vector<std::string> header_;
@@ -61,14 +76,6 @@ class Table {
 // The --format option's value ("text", "csv" or "markdown") as a Format.
 inline Format parse_format(const std::string& name) {
   return name == "csv" ? Format::csv : name == "markdown" ? Format::markdown : Format::text;
-}
-
-// printf-style formatting of one cell.
-template <typename... Args>
-std::string cell(const char* format, Args... args) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, format, args...);
-  return buffer;
 }
 
 }  // namespace kutlog::tools
