@@ -115,6 +115,10 @@ std::optional<LobeKernel> fit_polynomial(LobeKernel kernel, QuotientSeries& seri
     if (scale_lo != 0 && arithmetic != Arithmetic::scalar &&
         meets(kernel, arithmetic, fit, scale, profile, target))
       return kernel;
+    // Else, with FMA, q's last step exact (LobeKernel::compensated): six operations more.
+    kernel.compensated = arithmetic == Arithmetic::fused;
+    if (kernel.compensated && meets(kernel, arithmetic, fit, scale, profile, target)) return kernel;
+    kernel.compensated = false;
     kernel.scale_lo = 0;
     // Once the fit's own error is negligible, a higher degree only adds roundings.
     if (series.truncation_error(degree) * w_max < 0x1p-8 * target.abs_error) break;

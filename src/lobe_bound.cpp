@@ -107,6 +107,10 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
   const double w_center = polynomial ? 1.0 - double(kernel.center_t) : 0.0;
   const bool s_rounded = float_lanes && kernel.center_t < 0.5f;
   const bool split_scale = float_lanes && kernel.scale_lo != 0;
+  const bool compensated = float_lanes && kernel.compensated;
+  if (compensated && (arithmetic != Arithmetic::fused || degree == 0)) return {INFINITY, INFINITY};
+  Coefficients above_constant{};  // r's: c_1 .. c_degree
+  for (int i = 1; i <= degree; ++i) above_constant[i - 1] = stored[i];
   const double stored_scale = float_lanes ? double(kernel.scale_f) + double(kernel.scale_lo)
                                           : kernel.scale_d;
   // Clamping to scale_f moves an output by at most the distance of scale_f below scale.
@@ -120,7 +124,10 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
     const double x_lo = profile.w[j] - w_center, x_hi = w_hi - w_center;
     const Interval x{x_lo - widening * std::fabs(x_lo), x_hi + widening * std::fabs(x_hi)};
     const double sigma = x.magnitude();
-    const HornerBound horner = horner_bound(stored, degree, x, round, product_rounded);
+    // Horner's rule in full, or down to r, q = c_0 + s r, with the last step exact.
+    const HornerBound horner = compensated
+                                   ? horner_bound(above_constant, degree - 1, x, round, false)
+                                   : horner_bound(stored, degree, x, round, product_rounded);
     double coefficient_error = 0, slope = 0, sigma_power = 1;  // slope: sum i |c_i| sigma^i
     for (int i = 0; i <= degree; ++i, sigma_power *= sigma) {
       coefficient_error += rounding[i] * sigma_power;
@@ -128,9 +135,19 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
     }
     // A rounded s moves p(s) by at most sum |c_i| sigma^i ((1 + unit)^i - 1).
     const double input_error = s_rounded ? 1.001 * unit * slope : 0;
-    const double q_error =
-        coefficient_scale * fit.approximation_error + coefficient_error + horner.error + input_error;
-    const double q_magnitude = horner.magnitude + horner.error + input_error;
+    double evaluation_error = horner.error, q_magnitude = horner.magnitude + horner.error;
+    double lo_magnitude = 0;  // of q_lo, compensated
+    if (compensated) {
+      // s r = hi + lo exactly (two_product), c_0 + hi = q_hi + e exactly (two_sum),
+      // q_lo = e + lo rounded once.
+      const double product = sigma * q_magnitude * (1 + unit);
+      q_magnitude = std::fabs(stored[0]) + product;
+      lo_magnitude = 0.5 * (ulp_of_float(q_magnitude) + ulp_of_float(product));
+      evaluation_error = sigma * horner.error + round(lo_magnitude);
+    }
+    const double q_error = coefficient_scale * fit.approximation_error + coefficient_error +
+                           evaluation_error + input_error;
+    q_magnitude += input_error;
     const double exact_hi = scale * profile.value[j];  // F decreases with w
     double error;  // before the rounding to float
     if (polynomial) {
@@ -138,7 +155,11 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
       const double w_q = (w_hi + w_rounding) * q_magnitude;
       error = w_hi * q_error + w_rounding * q_magnitude + (product_rounded ? round(w_q) : 0) +
               std::fabs(stored_scale - scale);
-      if (split_scale) error += round(std::fabs(kernel.scale_lo) + w_q);  // scale_lo - w q
+      if (compensated)  // scale_lo - w q_lo, then - w q_hi
+        error += round(std::fabs(kernel.scale_lo) + w_hi * lo_magnitude) +
+                 round(std::fabs(kernel.scale_lo) + w_q + w_hi * lo_magnitude);
+      else if (split_scale)
+        error += round(std::fabs(kernel.scale_lo) + w_q);  // scale_lo - w q
       if (!float_lanes) error += round(exact_hi + error);  // the double subtraction
     } else {
       // B = 1 - w q in double, B^k by squaring (at most 13 products for k <= 64), times scale.

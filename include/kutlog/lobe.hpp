@@ -70,6 +70,11 @@ struct LobeKernel {
   // adds it to - w q before the peak, scale_f + (scale_lo - w q), so that scale_f's rounding
   // does not count whole where the output is in a lower binade than the peak.
   float scale_lo = 0;
+  // SIMD polynomial form with FMA only: q's last Horner step, c_0 + s r_1, kept exact as a pair
+  // (two_product, two_sum), and - w q applied to both halves before scale_f is added.
+  // Its rounding, about one ulp of q, is what keeps a normalized lobe's epicenter from a
+  // certified 2 ULP when its output sits a binade below the peak.
+  bool compensated = false;
   double scale_d = 1;
   std::array<float, kMaxDegree + 1> q_f{};   // SIMD polynomial form, times scale
   std::array<double, kMaxDegree + 1> q_d{};  // base_power form; scalar: both forms, times scale

@@ -73,6 +73,13 @@ struct Pair {
   Batch hi, lo;
 };
 
+// a + b = hi + lo exactly, whatever their magnitudes (Knuth's TwoSum: six operations).
+template <class Batch>
+inline Pair<Batch> two_sum(Batch a, Batch b) {
+  const Batch sum = a + b, b_part = sum - a;
+  return {sum, (a - (sum - b_part)) + (b - b_part)};
+}
+
 // a + b = hi + lo exactly, provided |a| >= |b| or a == 0 (Dekker's Fast2Sum).
 template <class Batch>
 inline Pair<Batch> fast_two_sum(Batch a, Batch b) {

@@ -49,7 +49,8 @@ class PreparedLobe {
   // Broadcasts only the coefficients the degree uses: a small span pays for nothing else.
   explicit PreparedLobe(const LobeKernel& kernel)
       : kernel_(kernel), t_cut_(kernel.t_cut), center_(kernel.center_t), scale_(kernel.scale_f),
-        scale_lo_(kernel.scale_lo), split_scale_(kernel.scale_lo != 0) {
+        scale_lo_(kernel.scale_lo), split_scale_(kernel.scale_lo != 0),
+        compensated_(has_fused_fma<Arch> && kernel.compensated) {
     const int degree = kDegree >= 0 ? kDegree : kernel.degree;
     for (int i = 0; i <= degree && i <= LobeKernel::kMaxDegree; ++i) q_[i] = F(kernel.q_f[i]);
   }
@@ -69,17 +70,30 @@ class PreparedLobe {
   F float_form(F t) const {
     const F clamped = xsimd::min(F(1.0f), t);
     const F w = F(1.0f) - clamped, s = center_ - clamped;
-    F q;
-    if constexpr (kDegree >= 0) {
-      q = q_[kDegree];
+    // r = q's Horner sum down to its linear coefficient: q = q_0 + s r.
+    const int degree = kDegree >= 0 ? kDegree : kernel_.degree;
+    if (degree == 0) return cut_at(t, w, q_[0]);
+    F r;
+    if constexpr (kDegree >= 1) {
+      r = q_[kDegree];
       [&]<int... i>(std::integer_sequence<int, i...>) {
-        ((q = mul_add(q, s, q_[kDegree - 1 - i])), ...);
-      }(std::make_integer_sequence<int, kDegree>());
+        ((r = mul_add(r, s, q_[kDegree - 1 - i])), ...);
+      }(std::make_integer_sequence<int, kDegree - 1>());
     } else {
-      q = q_[kernel_.degree];
-      for (int i = kernel_.degree; i-- > 0;) q = mul_add(q, s, q_[i]);
+      r = q_[degree];
+      for (int i = degree; i-- > 1;) r = mul_add(r, s, q_[i]);
     }
-    return cut_at(t, w, q);
+    if (compensated_) return compensated_cut_at(t, w, s, r);
+    return cut_at(t, w, mul_add(r, s, q_[0]));
+  }
+
+  // scale_f + (scale_lo - w q_lo - w q_hi), q_hi + q_lo = q_0 + s r (exact but for q_lo's
+  // one rounding), where t > t_cut (or t is NaN), else 0.
+  F compensated_cut_at(F t, F w, F s, F r) const {
+    const Pair<F> product = two_product(r, s);
+    const Pair<F> q = two_sum(q_[0], product.hi);
+    const F value = scale_ + neg_mul_add(w, q.hi, neg_mul_add(w, q.lo + product.lo, scale_lo_));
+    return xsimd::select(t <= t_cut_, F(0.0f), value);
   }
 
   // scale - w q, or scale + (scale_lo - w q), where t > t_cut (or t is NaN), else 0. AVX-512
@@ -110,7 +124,7 @@ class PreparedLobe {
 
   const LobeKernel& kernel_;
   F t_cut_, center_, scale_, scale_lo_;
-  bool split_scale_;
+  bool split_scale_, compensated_;
   std::array<F, (kDegree >= 0 ? kDegree : LobeKernel::kMaxDegree) + 1> q_;  // [0, degree] set
 };
 
