@@ -5,10 +5,10 @@
 #include <benchmark/benchmark.h>
 
 #include <string>
-#include <xsimd/xsimd.hpp>
 
 #include "inputs.hpp"
 #include "kutlog/simd/math.hpp"
+#include "kutlog/simd/xsimd.hpp"
 
 namespace kutlog::bench {
 

@@ -4,12 +4,12 @@
 #pragma once
 
 #include <cstddef>
-#include <xsimd/xsimd.hpp>
 
 #include "arch/kernel_table.hpp"
 #include "kutlog/simd/lobe.hpp"
 #include "kutlog/simd/math.hpp"
 #include "kutlog/simd/shade.hpp"
+#include "kutlog/simd/xsimd.hpp"
 
 namespace kutlog::detail {
 

@@ -10,7 +10,8 @@
 #include <array>
 #include <cstddef>
 #include <type_traits>
-#include <xsimd/xsimd.hpp>
+
+#include "kutlog/simd/xsimd.hpp"
 
 namespace kutlog::simd {
 

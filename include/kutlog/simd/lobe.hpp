@@ -10,10 +10,10 @@
 #pragma once
 
 #include <array>
-#include <xsimd/xsimd.hpp>
 
 #include "kutlog/lobe.hpp"
 #include "kutlog/simd/math.hpp"
+#include "kutlog/simd/xsimd.hpp"
 
 namespace kutlog::simd {
 

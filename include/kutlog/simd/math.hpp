@@ -21,9 +21,9 @@
 #include <array>
 #include <cstdint>
 #include <limits>
-#include <xsimd/xsimd.hpp>
 
 #include "kutlog/simd/float_ops.hpp"
+#include "kutlog/simd/xsimd.hpp"
 
 namespace kutlog::simd {
 

@@ -4,9 +4,9 @@
 #pragma once
 
 #include <cstdint>
-#include <xsimd/xsimd.hpp>
 
 #include "kutlog/simd/float_ops.hpp"
+#include "kutlog/simd/xsimd.hpp"
 
 namespace kutlog::simd {
 

@@ -1,0 +1,30 @@
+// kutlog/simd/xsimd.hpp: xsimd, as every kutlog header and source includes it, so that an
+// unoptimized GCC build of the AVX-512 kernels compiles.
+//
+// Without optimization (no __OPTIMIZE__: -O0, a Debug build), GCC 12's avx512bwintrin.h makes
+// _mm512_mask_blend_epi8 and _mm512_mask_blend_epi16 macros that cast their operands straight
+// to __v64qi / __v32hi; with optimization they are functions taking __m512i. xsimd 8.1's
+// avx512bw select hands them batches, which convert to __m512i but not to a vector of bytes,
+// in a switch on sizeof(T) whose 8- and 16-bit cases are compiled for every T: no integer
+// select compiles, and xsimd::log and xsimd::pow (blinn_phong_xsimd, the benchmarks) need one.
+// Upstream xsimd fixed the call (xtensor-stack/xsimd#852, after 8.1). Here the two macros
+// become the masked moves, which are functions at every level: blend(k, a, b) takes b where k
+// is set and a elsewhere, as mask_mov(a, k, b) does. This must come before xsimd's headers: a
+// macro expands where xsimd's template is written, not where it is instantiated. Optimized
+// builds (Release, RelWithDebInfo) compile exactly as without this header.
+#pragma once
+
+#if defined(__GNUC__) && !defined(__clang__) && !defined(__OPTIMIZE__) && \
+    (defined(__x86_64__) || defined(__i386__))
+#include <immintrin.h>
+#ifdef _mm512_mask_blend_epi8
+#undef _mm512_mask_blend_epi8
+#define _mm512_mask_blend_epi8(mask, a, b) _mm512_mask_mov_epi8((a), (mask), (b))
+#endif
+#ifdef _mm512_mask_blend_epi16
+#undef _mm512_mask_blend_epi16
+#define _mm512_mask_blend_epi16(mask, a, b) _mm512_mask_mov_epi16((a), (mask), (b))
+#endif
+#endif
+
+#include <xsimd/xsimd.hpp>
