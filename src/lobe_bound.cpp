@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 namespace kutlog::detail {
 namespace {
@@ -65,7 +66,9 @@ HornerBound horner_bound(const Coefficients& c, int degree, Interval x, Rounding
 
 LobeProfile lobe_profile(const LobeShape& shape, double w_max) {
   // Half the pieces on the epicenter, which ends at a piece's end: its ulp bound is tighter.
-  const double x_epicenter = std::acos(std::pow(kEpicenter, 1.0 / shape.k)) / shape.c;
+  // Past pi/2 (wide lobes, c < 1) the whole support is epicenter: sin^2 must not wrap around.
+  const double x_epicenter =
+      std::min(std::acos(std::pow(kEpicenter, 1.0 / shape.k)) / shape.c, std::numbers::pi / 2);
   // Rounded up: every t where F >= 0.6 is inside.
   const double w_epicenter =
       std::min(w_max, 2 * std::pow(std::sin(0.5 * x_epicenter), 2) * (1 + 0x1p-40));
