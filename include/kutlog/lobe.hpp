@@ -84,26 +84,9 @@ struct LobeKernel {
   // would call them for their size, and the call costs a fragment loop a fifth of its time.
   [[gnu::always_inline]] double unrounded(float t) const {
     const double clamped = t < 1.0f ? double(t) : 1.0, w = 1.0 - clamped;  // NaN kept
-    if (form == Form::base_power) return base_power(w);
-    // Horner's rule unrolled for the polynomial form's degrees (the setup fits at most 16):
-    // a fragment loop runs a third fewer instructions than with a loop over the degree.
-    const double s = double(center_t) - clamped;
-    switch (degree) {
-      case 0: return scale_d - w * q_d[0];
-      case 1: return scale_d - w * horner<1>(s);
-      case 2: return scale_d - w * horner<2>(s);
-      case 3: return scale_d - w * horner<3>(s);
-      case 4: return scale_d - w * horner<4>(s);
-      case 5: return scale_d - w * horner<5>(s);
-      case 6: return scale_d - w * horner<6>(s);
-      case 7: return scale_d - w * horner<7>(s);
-      case 8: return scale_d - w * horner<8>(s);
-      case 9: return scale_d - w * horner<9>(s);
-      case 10: return scale_d - w * horner<10>(s);
-      case 11: return scale_d - w * horner<11>(s);
-      case 12: return scale_d - w * horner<12>(s);
-      default: return scale_d - w * horner(s);
-    }
+    if (form == Form::base_power)
+      return with_q(w, [&](double q) { return scale_d * base_power(1.0 - w * q); });
+    return with_q(double(center_t) - clamped, [&](double q) { return scale_d - w * q; });
   }
   // F(t) by the scalar path: 0 at or below t_cut, NaN for NaN, else unrounded(t) rounded to
   // float and clamped to [0, scale_f]. (A branch-free cut measured 4 to 8 times slower here:
@@ -115,6 +98,32 @@ struct LobeKernel {
   }
 
  private:
+  // finish(q(x)), Horner's rule unrolled for the degrees the setup fits (at most 16 for the
+  // polynomial form, fewer for the base): a fragment loop runs a third fewer instructions
+  // than with a loop over the degree.
+  template <class Finish>
+  [[gnu::always_inline]] double with_q(double x, Finish finish) const {
+    switch (degree) {
+      case 0: return finish(q_d[0]);
+      case 1: return finish(horner<1>(x));
+      case 2: return finish(horner<2>(x));
+      case 3: return finish(horner<3>(x));
+      case 4: return finish(horner<4>(x));
+      case 5: return finish(horner<5>(x));
+      case 6: return finish(horner<6>(x));
+      case 7: return finish(horner<7>(x));
+      case 8: return finish(horner<8>(x));
+      case 9: return finish(horner<9>(x));
+      case 10: return finish(horner<10>(x));
+      case 11: return finish(horner<11>(x));
+      case 12: return finish(horner<12>(x));
+      default: {
+        double q = q_d[degree];
+        for (int i = degree; i-- > 0;) q = q * x + q_d[i];
+        return finish(q);
+      }
+    }
+  }
   template <int kDegree>
   double horner(double x) const {
     double q = q_d[kDegree];
@@ -123,25 +132,20 @@ struct LobeKernel {
     }(std::make_integer_sequence<int, kDegree>());
     return q;
   }
-  double horner(double x) const {
-    double q = q_d[degree];
-    for (int i = degree; i-- > 0;) q = q * x + q_d[i];
-    return q;
-  }
-  // scale B^k by squaring, unrolled for the small k the scalar setup prefers this form for.
-  double base_power(double w) const {
-    const double base = 1.0 - w * horner(w), square = base * base;
+  // base^k by squaring, unrolled for the small k the scalar setup prefers this form for.
+  double base_power(double base) const {
+    const double square = base * base;
     switch (k) {
-      case 1: return scale_d * base;
-      case 2: return scale_d * square;
-      case 3: return scale_d * (square * base);
-      case 4: return scale_d * (square * square);
-      case 5: return scale_d * (square * square * base);
+      case 1: return base;
+      case 2: return square;
+      case 3: return square * base;
+      case 4: return square * square;
+      case 5: return square * square * base;
       default: {
         double power = 1.0, factor = base;
         for (int e = k; e > 0; e >>= 1, factor *= factor)
           if (e & 1) power *= factor;
-        return scale_d * power;
+        return power;
       }
     }
   }
@@ -191,6 +195,9 @@ class Lobe {
 
  private:
   [[noreturn]] void throw_coef_overflow() const;
+  // eval's first call, and its throw (src/dispatch.cpp).
+  [[gnu::cold]] void eval_out_of_line(const float* t, float* out, std::size_t count,
+                                      Variant variant, Normalization normalization) const;
 
   double n_, Q_;
   int k_;

@@ -18,47 +18,53 @@ using floats_of = xsimd::batch<float, Arch>;
 
 // The first `count` (< N) lanes of an array, `padding` in the others, and their store: AVX-512
 // and AVX2 move them with a lane mask (masked lanes never touch memory), SSE4.1 through a
-// local buffer. No load or store leaves the arrays.
+// local buffer. No load or store leaves the arrays. Overloads on the arch's tag, the most
+// derived chosen, so that only SSE4.1's code has a buffer (an aligned buffer anywhere in a
+// function costs every call a stack realignment).
 template <class Arch>
-inline xsimd::batch<float, Arch> load_partial(const float* in, std::size_t count, float padding) {
+inline xsimd::batch<float, Arch> load_partial(xsimd::generic, const float* in, std::size_t count,
+                                              float padding) {
   using F = xsimd::batch<float, Arch>;
-#if XSIMD_WITH_AVX512F
-  if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>)
-    return _mm512_mask_loadu_ps(_mm512_set1_ps(padding), __mmask16((1u << count) - 1), in);
-#endif
-#if XSIMD_WITH_AVX2
-  if constexpr (std::is_base_of_v<xsimd::avx2, Arch> && !std::is_base_of_v<xsimd::avx512f, Arch>) {
-    const __m256i lanes = _mm256_cmpgt_epi32(_mm256_set1_epi32(int(count)),
-                                             _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
-    return _mm256_blendv_ps(_mm256_set1_ps(padding), _mm256_maskload_ps(in, lanes),
-                            _mm256_castsi256_ps(lanes));
-  }
-#endif
   alignas(64) float buffer[F::size];
   for (std::size_t j = 0; j < F::size; ++j) buffer[j] = j < count ? in[j] : padding;
   return F::load_aligned(buffer);
 }
 template <class Arch>
-inline void store_partial(float* out, xsimd::batch<float, Arch> value, std::size_t count) {
-  using F = xsimd::batch<float, Arch>;
-#if XSIMD_WITH_AVX512F
-  if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
-    _mm512_mask_storeu_ps(out, __mmask16((1u << count) - 1), value);
-    return;
-  }
-#endif
-#if XSIMD_WITH_AVX2
-  if constexpr (std::is_base_of_v<xsimd::avx2, Arch> && !std::is_base_of_v<xsimd::avx512f, Arch>) {
-    _mm256_maskstore_ps(out, _mm256_cmpgt_epi32(_mm256_set1_epi32(int(count)),
-                                                 _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7)),
-                        value);
-    return;
-  }
-#endif
-  alignas(64) float result[F::size];
+inline void store_partial(xsimd::generic, float* out, xsimd::batch<float, Arch> value,
+                          std::size_t count) {
+  alignas(64) float result[xsimd::batch<float, Arch>::size];
   value.store_aligned(result);
   for (std::size_t j = 0; j < count; ++j) out[j] = result[j];
 }
+#if XSIMD_WITH_AVX2
+inline __m256i first_lanes_avx2(std::size_t count) {
+  return _mm256_cmpgt_epi32(_mm256_set1_epi32(int(count)), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
+}
+template <class Arch>
+inline xsimd::batch<float, Arch> load_partial(xsimd::avx2, const float* in, std::size_t count,
+                                              float padding) {
+  const __m256i lanes = first_lanes_avx2(count);
+  return _mm256_blendv_ps(_mm256_set1_ps(padding), _mm256_maskload_ps(in, lanes),
+                          _mm256_castsi256_ps(lanes));
+}
+template <class Arch>
+inline void store_partial(xsimd::avx2, float* out, xsimd::batch<float, Arch> value,
+                          std::size_t count) {
+  _mm256_maskstore_ps(out, first_lanes_avx2(count), value);
+}
+#endif
+#if XSIMD_WITH_AVX512F
+template <class Arch>
+inline xsimd::batch<float, Arch> load_partial(xsimd::avx512f, const float* in, std::size_t count,
+                                              float padding) {
+  return _mm512_mask_loadu_ps(_mm512_set1_ps(padding), __mmask16((1u << count) - 1), in);
+}
+template <class Arch>
+inline void store_partial(xsimd::avx512f, float* out, xsimd::batch<float, Arch> value,
+                          std::size_t count) {
+  _mm512_mask_storeu_ps(out, __mmask16((1u << count) - 1), value);
+}
+#endif
 
 // Applies `kernel` to batches of `count` floats from each input array; the tail as a partial
 // batch padded with `padding` (a value inside every kernel's domain).
@@ -75,9 +81,12 @@ inline void map_arrays(const Kernel& kernel, const float* const (&inputs)[Inputs
   }
   if (i == count) return;
   const std::size_t tail = count - i;
-  const auto partial = [&](int input) { return load_partial<Arch>(inputs[input] + i, tail, padding); };
-  if constexpr (Inputs == 1) store_partial<Arch>(out + i, kernel(partial(0)), tail);
-  if constexpr (Inputs == 2) store_partial<Arch>(out + i, kernel(partial(0), partial(1)), tail);
+  const auto partial = [&](int input) {
+    return load_partial<Arch>(Arch{}, inputs[input] + i, tail, padding);
+  };
+  if constexpr (Inputs == 1) store_partial<Arch>(Arch{}, out + i, kernel(partial(0)), tail);
+  if constexpr (Inputs == 2)
+    store_partial<Arch>(Arch{}, out + i, kernel(partial(0), partial(1)), tail);
 }
 
 // The lobe over an array: the polynomial form with its degree as a template argument (unrolled,

@@ -72,6 +72,9 @@ inline xsimd::batch<T, Arch> neg_mul_add(xsimd::batch<T, Arch> a, xsimd::batch<T
 template <class Batch>
 struct Pair {
   Batch hi, lo;
+  // By value, into registers: with the aggregate's member-wise copy GCC 12 left a dead store
+  // of each half to the stack in the loops, and realigned the stack of every call for them.
+  Pair(Batch hi, Batch lo) : hi(hi), lo(lo) {}
 };
 
 // a + b = hi + lo exactly, whatever their magnitudes (Knuth's TwoSum: six operations).

@@ -90,9 +90,9 @@ class PreparedLobe {
   // scale_f + (scale_lo - w q_lo - w q_hi), q_hi + q_lo = q_0 + s r (exact but for q_lo's
   // one rounding), where t > t_cut (or t is NaN), else 0.
   F compensated_cut_at(F t, F w, F s, F r) const {
-    const Pair<F> product = two_product(r, s);
-    const Pair<F> q = two_sum(q_[0], product.hi);
-    const F value = scale_ + neg_mul_add(w, q.hi, neg_mul_add(w, q.lo + product.lo, scale_lo_));
+    const auto [product, product_error] = two_product(r, s);
+    const auto [q, q_error] = two_sum(q_[0], product);
+    const F value = scale_ + neg_mul_add(w, q, neg_mul_add(w, q_error + product_error, scale_lo_));
     return xsimd::select(t <= t_cut_, F(0.0f), value);
   }
 
