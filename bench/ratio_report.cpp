@@ -114,13 +114,18 @@ bool RatioCollector::print_call_shape_ratios(std::FILE* out) const {
         if (whole == 0) continue;
         if (!spans)
           std::fprintf(out, "\n| span, n = 1000 | arch | k | ns/element at 1 / 16 / 157 / 4096 | "
-                            "cost over 4096's at 1 / 16 / 157 |\n|---|---|---:|---|---|\n");
+                            "cost over 4096's at 1 / 16 / 157 | one-element call / powf |\n"
+                            "|---|---|---:|---|---|---:|\n");
         spans = printed = true;
         const double one = rate(name + "/count:1" + tail), sixteen = rate(name + "/count:16" + tail),
                      span157 = rate(name + "/count:157" + tail);
-        std::fprintf(out, "| %s | %s | %d | %.2f / %.3f / %.3f / %.3f | %.1fx / %.2fx / %.2fx |\n",
+        // A one-element call against one powf call (the fragment benchmark's, same k).
+        const double powf = rate("fragment/scalar_powf/n:1000/k:" + std::to_string(k));
+        char against_powf[16] = "";
+        if (powf > 0) std::snprintf(against_powf, sizeof against_powf, "%.2fx", powf / one);
+        std::fprintf(out, "| %s | %s | %d | %.2f / %.3f / %.3f / %.3f | %.1fx / %.2fx / %.2fx | %s |\n",
                      kernel, arch, k, 1e9 / one, 1e9 / sixteen, 1e9 / span157, 1e9 / whole,
-                     whole / one, whole / sixteen, whole / span157);
+                     whole / one, whole / sixteen, whole / span157, against_powf);
       }
   return printed;
 }
