@@ -26,14 +26,21 @@
 #include "inputs.hpp"
 #include "lobe_benchmarks.hpp"
 #include "kutlog/dispatch.hpp"
+#include "math_benchmarks.hpp"
 #include "ratio_report.hpp"
 
 namespace kutlog::bench {
-void register_benchmarks_sse4_1();
-void register_benchmarks_avx2();
-void register_benchmarks_avx512();
-
 namespace {
+void register_math_benchmarks_for(Arch arch) {
+  using Register = void (*)();
+  static constexpr Register kRegister[] = {
+#define KUTLOG_REGISTER_MATH(id, name, xsimd_arch, cpu_features) &register_math_benchmarks_of<Arch::id>,
+      KUTLOG_ARCHS(KUTLOG_REGISTER_MATH)
+#undef KUTLOG_REGISTER_MATH
+  };
+  kRegister[static_cast<int>(arch)]();
+}
+
 template <class Function>
 void scalar_unary(benchmark::State& state, Function function, const std::vector<float>& inputs) {
   BenchArrays arrays(inputs, inputs);
@@ -134,9 +141,7 @@ int main(int argc, char** argv) {
 
   // Only archs this machine runs are registered: no benchmark can execute an illegal
   // instruction.
-  if (arch_supported(Arch::avx512)) bench::register_benchmarks_avx512();
-  if (arch_supported(Arch::avx2)) bench::register_benchmarks_avx2();
-  if (arch_supported(Arch::sse4_1)) bench::register_benchmarks_sse4_1();
+  for (Arch arch : supported_archs()) bench::register_math_benchmarks_for(arch);
   for (Arch arch : supported_archs()) bench::register_lobe_benchmarks(arch);
   bench::register_scalar_benchmarks();
 

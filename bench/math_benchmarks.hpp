@@ -1,5 +1,5 @@
-// Benchmarks of the SIMD math kernels against xsimd's own functions, for one arch. Included by
-// bench/arch/<arch>.cpp, compiled with that arch's flags (both sides get the same flags).
+// Benchmarks of the SIMD math kernels against xsimd's own functions, for one arch. Instantiated
+// by bench/arch_benchmarks.cpp, compiled with that arch's flags (both sides get the same flags).
 #pragma once
 
 #include <benchmark/benchmark.h>
@@ -7,10 +7,15 @@
 #include <string>
 
 #include "inputs.hpp"
+#include "kutlog/dispatch.hpp"
 #include "kutlog/simd/math.hpp"
 #include "kutlog/simd/xsimd.hpp"
 
 namespace kutlog::bench {
+
+// Registers the math benchmarks of `arch` (bench/arch_benchmarks.cpp, once per arch).
+template <Arch arch>
+void register_math_benchmarks_of();
 
 // Applies `kernel` over arrays of kArrayLength floats (a multiple of every batch size), laid
 // out by BenchArrays so that loads never falsely wait on the stores (4K aliasing).

@@ -5,7 +5,17 @@
 #include <stdexcept>
 #include <utility>
 
+#include "kutlog/dispatch.hpp"
+
 namespace kutlog::bench {
+namespace {
+// The archs of the registry, best first: the order of the tables' rows.
+std::vector<std::string> compiled_arch_names() {
+  std::vector<std::string> names;
+  for (Arch arch : kCompiledArchs) names.emplace_back(arch_name(arch));
+  return names;
+}
+}  // namespace
 
 void RatioCollector::ReportRuns(const std::vector<Run>& runs) {
   display_->ReportRuns(runs);
@@ -57,9 +67,9 @@ double RatioCollector::rate(const std::string& name) const {
 bool RatioCollector::print_lobe_ratios(std::FILE* out) const {
   // Throughput of each lobe kernel over that of pow_xsimd at the same n and arch.
   bool header = false;
-  for (const char* arch : {"avx512", "avx2", "sse4.1"})
+  for (const std::string& arch : compiled_arch_names())
     for (int n : {10, 100, 1000}) {
-      const std::string tail = "/arch:" + std::string(arch);
+      const std::string tail = "/arch:" + arch;
       const std::string at_n = "/n:" + std::to_string(n);
       const double pow_xsimd = rate("lobe/pow_xsimd" + at_n + tail);
       if (pow_xsimd == 0) continue;
@@ -73,7 +83,7 @@ bool RatioCollector::print_lobe_ratios(std::FILE* out) const {
       for (int k : {1, 3, 5}) {
         const std::string at_k = at_n + "/k:" + std::to_string(k);
         std::fprintf(out, "| %s | %d | %d | %.0f | %.2fx | %.2fx | %.2fx | %.2fx | %.2fx |\n",
-                     arch, n, k, pow_xsimd / 1e6,
+                     arch.c_str(), n, k, pow_xsimd / 1e6,
                      rate("lobe/kutlog_precise" + at_k + tail) / pow_xsimd,
                      rate("lobe/kutlog_fast" + at_k + tail) / pow_xsimd,
                      rate("lobe/kutlog_perlane" + at_k + tail) / pow_xsimd,
@@ -105,7 +115,7 @@ bool RatioCollector::print_call_shape_ratios(std::FILE* out) const {
   // Spans: ns per element of the array eval at each span length, and its cost over that of
   // a 4096 span.
   bool spans = false;
-  for (const char* arch : {"avx512", "avx2", "sse4.1"})
+  for (const std::string& arch : compiled_arch_names())
     for (const char* kernel : {"kutlog_precise", "kutlog_fast"})
       for (int k : {3, 5}) {
         const std::string name = std::string("span/") + kernel + "/n:1000/k:" + std::to_string(k);
@@ -124,7 +134,7 @@ bool RatioCollector::print_call_shape_ratios(std::FILE* out) const {
         char against_powf[16] = "";
         if (powf > 0) std::snprintf(against_powf, sizeof against_powf, "%.2fx", powf / one);
         std::fprintf(out, "| %s | %s | %d | %.2f / %.3f / %.3f / %.3f | %.1fx / %.2fx / %.2fx | %s |\n",
-                     kernel, arch, k, 1e9 / one, 1e9 / sixteen, 1e9 / span157, 1e9 / whole,
+                     kernel, arch.c_str(), k, 1e9 / one, 1e9 / sixteen, 1e9 / span157, 1e9 / whole,
                      whole / one, whole / sixteen, whole / span157, against_powf);
       }
   return printed;
@@ -133,7 +143,7 @@ bool RatioCollector::print_call_shape_ratios(std::FILE* out) const {
 bool RatioCollector::print_math_ratios(std::FILE* out) const {
   bool header = false;
   for (const char* function : {"acos", "cos", "exp", "log", "pow"})
-    for (const char* arch : {"avx512", "avx2", "sse4.1"}) {
+    for (const std::string& arch : compiled_arch_names()) {
       const std::string suffix = std::string("/arch:") + arch;
       const double ours = rate(std::string("math/") + function + "/kutlog_u10" + suffix);
       const double xsimd = rate(std::string("math/") + function + "/xsimd" + suffix);
@@ -145,7 +155,7 @@ bool RatioCollector::print_math_ratios(std::FILE* out) const {
                      "std scalar (M/s) | kutlog / std |\n|---|---|---:|---:|---:|---:|---:|\n");
         header = true;
       }
-      std::fprintf(out, "| %s | %s | %.0f | %.0f | %.2f | %.0f | %.1f |\n", function, arch,
+      std::fprintf(out, "| %s | %s | %.0f | %.0f | %.2f | %.0f | %.1f |\n", function, arch.c_str(),
                    ours / 1e6, xsimd / 1e6, xsimd ? ours / xsimd : 0.0, scalar / 1e6,
                    scalar ? ours / scalar : 0.0);
     }

@@ -2,8 +2,7 @@
 // baseline flags only: nothing here may execute an instruction the CPU might lack.
 #include "kutlog/dispatch.hpp"
 
-#include <cpuid.h>
-
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <cstdlib>
@@ -11,6 +10,7 @@
 #include <string>
 
 #include "arch/kernel_table.hpp"
+#include "cpu_features.hpp"
 #include "kutlog/lobe.hpp"
 #include "kutlog/math.hpp"
 #include "kutlog/reference.hpp"
@@ -19,43 +19,33 @@
 namespace kutlog {
 namespace {
 
-struct CpuFeatures {
-  bool sse4_1 = false, avx2_fma = false, avx512 = false;
+// The registry (cmake/KutlogArchs.cmake) as a table, indexed by Arch.
+struct ArchEntry {
+  std::string_view name;
+  std::string_view cpu_features;
+  const detail::KernelTable& (*kernel_table)();
 };
+constexpr ArchEntry kArchEntries[] = {
+#define KUTLOG_ARCH_ENTRY(id, name, xsimd_arch, cpu_features) \
+  {name, cpu_features, &detail::kernel_table<Arch::id>},
+    KUTLOG_ARCHS(KUTLOG_ARCH_ENTRY)
+#undef KUTLOG_ARCH_ENTRY
+};
+static_assert(std::size(kArchEntries) == kCompiledArchs.size());
 
-std::uint64_t read_xcr0() {
-  std::uint32_t low, high;
-  __asm__ volatile("xgetbv" : "=a"(low), "=d"(high) : "c"(0));
-  return (std::uint64_t(high) << 32) | low;
-}
+const ArchEntry& entry(Arch arch) { return kArchEntries[static_cast<std::size_t>(arch)]; }
 
-// CPUID says what the processor has; XGETBV says which register states the OS saves on a
-// context switch. An AVX instruction on an OS that does not save YMM registers faults, so
-// both must agree (xsimd 8.1 checks only CPUID).
-CpuFeatures detect_cpu_features() {
-  CpuFeatures features;
-  unsigned eax, ebx, ecx, edx;
-  if (!__get_cpuid(1, &eax, &ebx, &ecx, &edx)) return features;
-  features.sse4_1 = ecx & bit_SSE4_1;
-  const bool fma = ecx & bit_FMA, avx = ecx & bit_AVX, osxsave = ecx & bit_OSXSAVE;
-  if (!osxsave || !avx) return features;
-  const std::uint64_t xcr0 = read_xcr0();
-  const bool os_saves_ymm = (xcr0 & 0x6) == 0x6;      // SSE and AVX state
-  const bool os_saves_zmm = (xcr0 & 0xe6) == 0xe6;    // plus opmask, ZMM_Hi256, Hi16_ZMM
-  if (!__get_cpuid_count(7, 0, &eax, &ebx, &ecx, &edx)) return features;
-  features.avx2_fma = os_saves_ymm && fma && (ebx & bit_AVX2);
-  const std::uint32_t avx512_bits =
-      bit_AVX512F | bit_AVX512CD | bit_AVX512DQ | bit_AVX512BW | bit_AVX512VL;
-  features.avx512 = features.avx2_fma && os_saves_zmm && (ebx & avx512_bits) == avx512_bits;
-  return features;
-}
+constexpr Arch kBaselineArch = kCompiledArchs.back();
 
-// KUTLOG_CPU_HIDE=avx512[,avx2...] makes kutlog treat this CPU as lacking those archs (and,
-// for avx2, avx512 with it), so that the fallbacks and the unsupported-arch errors can be
-// tested on a machine that has everything (glibc's hwcaps tunables do the same for glibc).
-CpuFeatures hide_archs_named_in_environment(CpuFeatures features) {
+using ArchSupport = std::array<bool, kCompiledArchs.size()>;
+
+// KUTLOG_CPU_HIDE=avx512[,avx2...] makes kutlog treat this CPU as lacking those archs and
+// every arch ranked above them (for avx2, avx512 too), so that the fallbacks and the
+// unsupported-arch errors can be tested on a machine that has everything (glibc's hwcaps
+// tunables do the same for glibc).
+ArchSupport hide_archs_named_in_environment(ArchSupport support) {
   const char* hidden = std::getenv("KUTLOG_CPU_HIDE");
-  if (!hidden) return features;
+  if (!hidden) return support;
   std::string_view names = hidden;
   while (!names.empty()) {
     const std::size_t comma = names.find(',');
@@ -65,24 +55,26 @@ CpuFeatures hide_archs_named_in_environment(CpuFeatures features) {
     } catch (const std::invalid_argument& error) {
       throw std::runtime_error(std::string("kutlog: KUTLOG_CPU_HIDE: ") + error.what());
     }
-    switch (arch) {  // hiding an arch hides those that build on it
-      case Arch::sse4_1: features.sse4_1 = false; [[fallthrough]];
-      case Arch::avx2: features.avx2_fma = false; [[fallthrough]];
-      case Arch::avx512: features.avx512 = false;
-    }
+    for (std::size_t above = 0; above <= static_cast<std::size_t>(arch); ++above)
+      support[above] = false;
     names = comma == std::string_view::npos ? std::string_view() : names.substr(comma + 1);
   }
-  return features;
+  return support;
 }
 
-const CpuFeatures& cpu_features() {
-  static const CpuFeatures features = hide_archs_named_in_environment(detect_cpu_features());
-  return features;
+const ArchSupport& arch_support() {
+  static const ArchSupport support = [] {
+    ArchSupport detected{};
+    for (Arch arch : kCompiledArchs)
+      detected[static_cast<std::size_t>(arch)] = detail::cpu_has_features(entry(arch).cpu_features);
+    return hide_archs_named_in_environment(detected);
+  }();
+  return support;
 }
 
-std::string supported_list() {
+std::string name_list(const auto& archs) {
   std::string names;
-  for (Arch arch : supported_archs()) names += (names.empty() ? "" : ", ") + std::string(arch_name(arch));
+  for (Arch arch : archs) names += (names.empty() ? "" : ", ") + std::string(arch_name(arch));
   return names.empty() ? "none" : names;
 }
 
@@ -90,8 +82,8 @@ void require_supported(Arch arch, const char* who) {
   if (!arch_supported(arch))
     throw std::runtime_error(std::string("kutlog: ") + who + " arch " +
                              std::string(arch_name(arch)) +
-                             " is not supported by this machine (supported: " + supported_list() +
-                             ")");
+                             " is not supported by this machine (supported: " +
+                             name_list(supported_archs()) + ")");
 }
 
 // The automatic choice: KUTLOG_ARCH if set, else the best supported arch. Computed once
@@ -110,7 +102,9 @@ Arch automatic_arch() {
     }
     const std::vector<Arch> archs = supported_archs();
     if (archs.empty())
-      throw std::runtime_error("kutlog: this CPU lacks SSE4.1, kutlog's baseline arch");
+      throw std::runtime_error("kutlog: this CPU lacks " + std::string(arch_name(kBaselineArch)) +
+                               ", kutlog's baseline arch (compiled: " +
+                               name_list(kCompiledArchs) + ")");
     return archs.front();
   }();
   return arch;
@@ -118,14 +112,7 @@ Arch automatic_arch() {
 
 constexpr int kNotForced = -1;
 std::atomic<int> forced_arch{kNotForced};
-const detail::KernelTable& table_of(Arch arch) {
-  switch (arch) {
-    case Arch::avx512: return detail::kernel_table_avx512();
-    case Arch::avx2: return detail::kernel_table_avx2();
-    case Arch::sse4_1: break;
-  }
-  return detail::kernel_table_sse4_1();
-}
+const detail::KernelTable& table_of(Arch arch) { return entry(arch).kernel_table(); }
 
 // The active arch's table, so that a call reads one pointer (a one-element eval spent two
 // fifths of its time going through active_arch() to its table): set by force_arch, cleared by
@@ -150,31 +137,16 @@ inline const detail::KernelTable& active_table() {
 
 const detail::KernelTable& detail::active_kernel_table() { return active_table(); }
 
-std::string_view arch_name(Arch arch) {
-  switch (arch) {
-    case Arch::avx512: return "avx512";
-    case Arch::avx2: return "avx2";
-    case Arch::sse4_1: break;
-  }
-  return "sse4.1";
-}
+std::string_view arch_name(Arch arch) { return entry(arch).name; }
 
 Arch parse_arch(std::string_view name) {
   for (Arch arch : kCompiledArchs)
     if (name == arch_name(arch)) return arch;
   throw std::invalid_argument("kutlog: unknown arch '" + std::string(name) +
-                              "'; valid: avx512, avx2, sse4.1");
+                              "'; valid: " + name_list(kCompiledArchs));
 }
 
-bool arch_supported(Arch arch) {
-  const CpuFeatures& features = cpu_features();
-  switch (arch) {
-    case Arch::avx512: return features.avx512;
-    case Arch::avx2: return features.avx2_fma;
-    case Arch::sse4_1: break;
-  }
-  return features.sse4_1;
-}
+bool arch_supported(Arch arch) { return arch_support()[static_cast<std::size_t>(arch)]; }
 
 std::vector<Arch> supported_archs() {
   std::vector<Arch> archs;

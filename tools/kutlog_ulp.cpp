@@ -150,7 +150,11 @@ int main(int argc, char** argv) {
   app.add_option("--function", functions, "Functions, comma-separated")
       ->delimiter(',')
       ->capture_default_str();
-  app.add_option("--arch", arch_names, "Archs, comma-separated (avx512, avx2, sse4.1), all, or active (the dispatched one)")
+  std::string compiled_names;
+  for (kutlog::Arch arch : kutlog::kCompiledArchs)
+    compiled_names += (compiled_names.empty() ? "" : ", ") + std::string(kutlog::arch_name(arch));
+  app.add_option("--arch", arch_names,
+                 "Archs, comma-separated (" + compiled_names + "), all, or active (the dispatched one)")
       ->delimiter(',')
       ->capture_default_str();
   app.add_option("--format", format_name, "Output format: text, csv or markdown")

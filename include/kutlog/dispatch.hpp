@@ -2,29 +2,41 @@
 //
 // kutlog compiles its kernels once per arch (each in its own translation unit, with only that
 // arch's flags) and picks one at run time: the best one the CPU supports and the operating
-// system has enabled (CPUID and XGETBV), unless the environment variable KUTLOG_ARCH or
-// force_arch() names one. Choosing is thread-safe; the choice is read once per call.
+// system has enabled (on x86, CPUID and XGETBV), unless the environment variable KUTLOG_ARCH
+// or force_arch() names one. Choosing is thread-safe; the choice is read once per call.
+//
+// The archs come from the registry, cmake/KutlogArchs.cmake, through the generated
+// kutlog/archs.hpp: on x86-64 avx512 (AVX-512 F, CD, DQ, BW, VL + FMA), avx2 (AVX2 + FMA3)
+// and sse4.1 (x86-64-v2, the baseline).
 //
 // For tests, KUTLOG_CPU_HIDE=avx512[,avx2,...] makes kutlog treat the CPU as lacking those
-// archs (and those that build on them); a name it does not know makes the first query throw
-// std::runtime_error saying so.
+// archs (and every arch ranked above them); a name it does not know makes the first query
+// throw std::runtime_error saying so.
 #pragma once
 
+#include <array>
 #include <string_view>
 #include <vector>
 
+#include "kutlog/archs.hpp"
+
 namespace kutlog {
 
+// One enumerator per arch of the registry, in its order (best first, from 0).
 enum class Arch {
-  sse4_1,  // SSE4.1 (x86-64-v2), the baseline
-  avx2,    // AVX2 + FMA3
-  avx512,  // AVX-512 F, CD, DQ, BW, VL (+ FMA)
+#define KUTLOG_ARCH_ENUMERATOR(id, name, xsimd_arch, cpu_features) id,
+  KUTLOG_ARCHS(KUTLOG_ARCH_ENUMERATOR)
+#undef KUTLOG_ARCH_ENUMERATOR
 };
 
-// Every arch kutlog is compiled for, best first.
-inline constexpr Arch kCompiledArchs[] = {Arch::avx512, Arch::avx2, Arch::sse4_1};
+// Every arch kutlog is compiled for, best first; the last is the baseline.
+inline constexpr std::array kCompiledArchs = {
+#define KUTLOG_ARCH_VALUE(id, name, xsimd_arch, cpu_features) Arch::id,
+    KUTLOG_ARCHS(KUTLOG_ARCH_VALUE)
+#undef KUTLOG_ARCH_VALUE
+};
 
-// "avx512", "avx2", "sse4.1": the names KUTLOG_ARCH and the tools take.
+// The names KUTLOG_ARCH and the tools take ("avx512", "avx2", "sse4.1" on x86-64).
 std::string_view arch_name(Arch arch);
 // The arch of that name; std::invalid_argument listing the valid names otherwise.
 Arch parse_arch(std::string_view name);

@@ -3,6 +3,7 @@
 
 #include <cstddef>
 
+#include "kutlog/dispatch.hpp"
 #include "kutlog/lobe.hpp"
 #include "kutlog/shade.hpp"
 
@@ -54,9 +55,9 @@ struct KernelTable {
 // The table of the arch in use (kutlog/dispatch.hpp); throws as active_arch() does.
 const KernelTable& active_kernel_table();
 
-// One per arch translation unit (src/arch/<arch>.cpp), compiled with that arch's flags.
-const KernelTable& kernel_table_sse4_1();
-const KernelTable& kernel_table_avx2();
-const KernelTable& kernel_table_avx512();
+// The table of one arch: specialized by src/arch/kernels.cpp, which CMake compiles once per
+// arch of the registry with only that arch's flags.
+template <Arch arch>
+const KernelTable& kernel_table();
 
 }  // namespace kutlog::detail

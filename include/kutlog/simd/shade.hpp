@@ -56,7 +56,8 @@ inline xsimd::batch_bool<float, Arch> load_mask(const std::uint8_t* mask) {
         _mm256_castsi256_ps(_mm256_cmpgt_epi32(lanes, _mm256_setzero_si256())));
   } else
 #endif
-  {
+#if XSIMD_WITH_SSE2
+  if constexpr (std::is_base_of_v<xsimd::sse2, Arch> && floats<Arch>::size == 4) {
     std::int32_t four;
     __builtin_memcpy(&four, mask, sizeof four);
     // Bytes to 32-bit lanes with SSE2 alone, so that this header compiles with the compiler's
@@ -64,6 +65,12 @@ inline xsimd::batch_bool<float, Arch> load_mask(const std::uint8_t* mask) {
     const __m128i zero = _mm_setzero_si128();
     const __m128i lanes = _mm_unpacklo_epi16(_mm_unpacklo_epi8(_mm_cvtsi32_si128(four), zero), zero);
     return xsimd::batch_bool<float, Arch>(_mm_castsi128_ps(_mm_cmpgt_epi32(lanes, _mm_setzero_si128())));
+  } else
+#endif
+  {  // any other arch (NEON; AVX without AVX2): lanes of 0 or 1, compared
+    alignas(64) float lanes[floats<Arch>::size];
+    for (std::size_t j = 0; j < floats<Arch>::size; ++j) lanes[j] = mask[j] ? 1.0f : 0.0f;
+    return floats<Arch>::load_aligned(lanes) != floats<Arch>(0.0f);
   }
 }
 

@@ -1,0 +1,55 @@
+# The arch registry: the one list of the instruction sets kutlog compiles its kernels for.
+#
+# Everything that varies with the arch is read from here: the kernel objects and their flags
+# (CMakeLists.txt compiles src/arch/kernels.cpp once per entry), the benchmarks' per-arch
+# objects (bench/arch_benchmarks.cpp, likewise), the generated header kutlog/archs.hpp (the
+# Arch enum, the dispatch table, the names that KUTLOG_ARCH, KUTLOG_CPU_HIDE and the tools
+# accept, the error that lists them) and the per-arch tests of tests/CMakeLists.txt.
+#
+#   kutlog_arch(<id> NAME <name> XSIMD <xsimd arch type> CPU <features...> FLAGS <flags...>)
+#
+# <id> is a C++ identifier (the enumerator kutlog::Arch::<id>), <name> what users type
+# (KUTLOG_ARCH=<name>), CPU the features src/cpu_features.cpp must find in this CPU (and the
+# OS must have enabled) for the arch to be chosen. Entries go best first: dispatch takes the
+# first supported one, and KUTLOG_CPU_HIDE=<name> hides an arch and every one listed before it.
+# The last entry of a platform is its baseline.
+
+set(KUTLOG_ARCHS)
+function(kutlog_arch id)
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "NAME;XSIMD" "CPU;FLAGS")
+  if(NOT arg_NAME OR NOT arg_XSIMD OR NOT arg_CPU)
+    message(FATAL_ERROR "kutlog_arch(${id}): NAME, XSIMD and CPU are required")
+  endif()
+  set(KUTLOG_ARCHS ${KUTLOG_ARCHS} ${id} PARENT_SCOPE)
+  set(KUTLOG_ARCH_NAME_${id} ${arg_NAME} PARENT_SCOPE)
+  set(KUTLOG_ARCH_XSIMD_${id} ${arg_XSIMD} PARENT_SCOPE)
+  set(KUTLOG_ARCH_CPU_${id} ${arg_CPU} PARENT_SCOPE)
+  set(KUTLOG_ARCH_FLAGS_${id} ${arg_FLAGS} PARENT_SCOPE)
+endfunction()
+
+if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|amd64)$")
+  # GCC 12 warns inside its own avx512fintrin.h, whose _mm512_undefined_ps initializes a vector
+  # with itself, at -O2 (maybe-uninitialized; uninitialized where a masked load feeds it);
+  # clang has no such warning (and warns about the unknown option).
+  kutlog_arch(avx512 NAME avx512 XSIMD xsimd::avx512bw
+              CPU avx avx2 fma avx512f avx512cd avx512dq avx512bw avx512vl
+              FLAGS -mavx512f -mavx512cd -mavx512dq -mavx512bw -mavx512vl -mfma
+                    $<$<CXX_COMPILER_ID:GNU>:-Wno-maybe-uninitialized -Wno-uninitialized>)
+  kutlog_arch(avx2 NAME avx2 XSIMD xsimd::fma3<xsimd::avx2> CPU avx avx2 fma
+              FLAGS -mavx2 -mfma)
+  kutlog_arch(sse4_1 NAME sse4.1 XSIMD xsimd::sse4_1 CPU sse4_1 FLAGS -msse4.1)
+else()
+  message(WARNING "kutlog has no SIMD arch for ${CMAKE_SYSTEM_PROCESSOR} (issue 13)")
+endif()
+
+# kutlog/archs.hpp: the list as an X-macro, KUTLOG_ARCHS(X) expanding to
+# X(id, "name", xsimd type, "cpu features") per arch, best first.
+set(KUTLOG_ARCH_ENTRIES "")
+foreach(id IN LISTS KUTLOG_ARCHS)
+  list(JOIN KUTLOG_ARCH_CPU_${id} " " cpu)
+  string(APPEND KUTLOG_ARCH_ENTRIES
+         " \\\n  X(${id}, \"${KUTLOG_ARCH_NAME_${id}}\", ${KUTLOG_ARCH_XSIMD_${id}}, \"${cpu}\")")
+endforeach()
+set(KUTLOG_GENERATED_INCLUDE_DIR ${PROJECT_BINARY_DIR}/include)
+configure_file(${CMAKE_CURRENT_LIST_DIR}/archs.hpp.in
+               ${KUTLOG_GENERATED_INCLUDE_DIR}/kutlog/archs.hpp @ONLY)
