@@ -9,6 +9,9 @@
 #include <optional>
 #include <string_view>
 
+#include "kutlog/api.hpp"
+
+KUTLOG_API_BEGIN
 namespace kutlog {
 
 struct AccuracyBound {
@@ -71,3 +74,4 @@ constexpr std::optional<AccuracyBound> find_accuracy_bound(std::string_view func
 }
 
 }  // namespace kutlog
+KUTLOG_API_END

@@ -9,6 +9,9 @@
 #include <cstddef>
 #include <string_view>
 
+#include "kutlog/api.hpp"
+
+KUTLOG_API_BEGIN
 namespace kutlog::article {
 
 // The row and column headings of Tables 1 and 2.
@@ -108,3 +111,4 @@ struct EnergyErrors {
 EnergyErrors table2_energy_errors(double Q, int k);
 
 }  // namespace kutlog::article
+KUTLOG_API_END

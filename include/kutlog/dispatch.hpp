@@ -18,8 +18,10 @@
 #include <string_view>
 #include <vector>
 
+#include "kutlog/api.hpp"
 #include "kutlog/archs.hpp"
 
+KUTLOG_API_BEGIN
 namespace kutlog {
 
 // One enumerator per arch of the registry, in its order (best first, from 0).
@@ -68,3 +70,4 @@ class ScopedArch {
 };
 
 }  // namespace kutlog
+KUTLOG_API_END

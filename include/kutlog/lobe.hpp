@@ -41,6 +41,9 @@
 #include <type_traits>
 #include <utility>
 
+#include "kutlog/api.hpp"
+
+KUTLOG_API_BEGIN
 namespace kutlog {
 
 enum class Variant : std::uint8_t { precise, fast };
@@ -288,3 +291,4 @@ void blinn_phong_u10(const float* t, float* out, std::size_t count, float n, flo
 void schlick(const float* t, float* out, std::size_t count, float n);
 
 }  // namespace kutlog
+KUTLOG_API_END

@@ -9,6 +9,9 @@
 
 #include <cstddef>
 
+#include "kutlog/api.hpp"
+
+KUTLOG_API_BEGIN
 namespace kutlog::math {
 
 void acos_u10(const float* x, float* out, std::size_t count);
@@ -22,3 +25,4 @@ void pow_u10(const float* x, const float* y, float* out, std::size_t count);
 void pow_u10(const float* x, float y, float* out, std::size_t count);
 
 }  // namespace kutlog::math
+KUTLOG_API_END

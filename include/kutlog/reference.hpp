@@ -23,6 +23,9 @@
 #include <functional>
 #include <numbers>
 
+#include "kutlog/api.hpp"
+
+KUTLOG_API_BEGIN
 namespace kutlog::ref {
 
 inline constexpr double pi = std::numbers::pi;
@@ -181,3 +184,4 @@ double integrate(const std::function<double(double)>& f, double a, double b,
                  double rel_tol = 1e-13);
 
 }  // namespace kutlog::ref
+KUTLOG_API_END

@@ -23,8 +23,10 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "kutlog/api.hpp"
 #include "kutlog/lobe.hpp"
 
+KUTLOG_API_BEGIN
 namespace kutlog {
 
 // Three arrays of the components of n vectors.
@@ -64,3 +66,4 @@ void shade(const Lobe& lobe, const float* t, const float* n_dot_l, float* out, s
            const std::uint8_t* mask = nullptr, ShadeOptions options = {});
 
 }  // namespace kutlog
+KUTLOG_API_END
