@@ -43,14 +43,6 @@ bool apply_data_rule(double t, double& out) {
   return false;
 }
 
-// integral from 0 to G of sin(b*theta) d(theta) = (1 - cos(bG)) / b, written without the
-// cancellation of 1 - cos for small bG.
-double sine_integral_to(double b, double G) {
-  if (b == 0) return 0;
-  const double s = std::sin(0.5 * b * G);
-  return 2 * s * s / b;
-}
-
 }  // namespace
 
 void validate_exponent(double n, const char* name) {
@@ -134,34 +126,45 @@ double KutlogLobe::eval(double t) const {
 double KutlogLobe::integral() const { return integral_times_c_squared() / (c_ * c_); }
 
 double KutlogLobe::integral_times_c_squared() const {
-  // cos^k(u) = 2^-k sum_j C(k,j) cos(a_j theta / c) with a_j = (k - 2j) c, and
-  // cos(a theta) cos(theta) sin(theta) = (sin((2+a) theta) + sin((2-a) theta)) / 4; each sine
-  // integrates to S(b) = 2 sin^2(bG/2) / b. Int ~ 1/c^2 while S(2 +- a) ~ 1/a, so for
-  // |a| >= 4 the pair is summed in one fraction whose numerator has no cancellation:
-  //   S(2+a) + S(2-a) = 2 [2 (s+^2 + s-^2) - a sin(2G) sin(aG)] / ((2-a)(2+a)),
-  //   s+- = sin(G +- aG/2)   (sin^2(G+x) - sin^2(G-x) = sin(2G) sin(2x)),
-  // and, written with m = a/c, it is c^2 times the fraction below. Near a = +-2 the fraction
-  // is 0/0: there the two sines are kept apart.
-  const double G = integration_limit();
-  const double sin_2G = std::sin(2 * G);
+  return sine_moment_times_c_squared(integration_limit(), 2) / 2;  // cos sin = sin(2 theta) / 2
+}
+
+double KutlogLobe::sine_moment_times_c_squared(double theta, int frequency) const {
+  // cos^k(u) = 2^-k sum_j C(k,j) cos(a_j theta) with a_j = (k - 2j) c, and with p = frequency,
+  // cos(a theta) sin(p theta) = (sin((p+a) theta) + sin((p-a) theta)) / 2; each sine
+  // integrates to S(b) = 2 sin^2(b theta/2) / b. The integral ~ 1/c^2 while S(p +- a) ~ 1/a,
+  // so for |a| >= 2p the pair is summed in one fraction whose numerator has no cancellation:
+  //   S(p+a) + S(p-a) = 2 [p (s+^2 + s-^2) - a sin(p theta) sin(a theta)] / ((p-a)(p+a)),
+  //   s+- = sin(p theta/2 +- a theta/2)   (sin^2(x+y) - sin^2(x-y) = sin(2x) sin(2y)),
+  // and, written with m = a/c, it is c^2 times the fraction below. Near a = +-p the fraction
+  // is 0/0: there the two sines are kept apart. The pair is even in m, so j and k - j are
+  // summed once.
+  const double p = frequency;
+  const double sin_p_theta = std::sin(p * theta);
+  const auto scaled_sine_integral = [&](double b) {  // c^2 S(b), without underflow of S
+    if (b == 0) return 0.0;
+    const double s = c_ * std::sin(0.5 * b * theta);
+    return 2 * s * s / b;
+  };
   double binomial_weight = std::ldexp(1.0, -k_);  // C(k,j) / 2^k
   double sum = 0;
-  for (int j = 0; j <= k_; ++j) {
+  for (int j = 0; 2 * j <= k_; ++j) {
     const int m = k_ - 2 * j;
     const double a = m * c_;
-    double pair;  // c^2 (S(2+a) + S(2-a))
-    if (std::fabs(a) < 4) {
-      pair = c_ * c_ * (sine_integral_to(2 + a, G) + sine_integral_to(2 - a, G));
+    double pair;  // c^2 (S(p+a) + S(p-a))
+    if (std::fabs(a) < 2 * p) {
+      pair = scaled_sine_integral(p + a) + scaled_sine_integral(p - a);
     } else {
-      const double s_plus = std::sin(G + 0.5 * a * G), s_minus = std::sin(G - 0.5 * a * G);
-      const double numerator = 2 * (s_plus * s_plus + s_minus * s_minus) -
-                               a * sin_2G * std::sin(a * G);
-      pair = 2 * numerator / ((2 / c_ - m) * (2 / c_ + m));
+      const double s_plus = std::sin(0.5 * p * theta + 0.5 * a * theta);
+      const double s_minus = std::sin(0.5 * p * theta - 0.5 * a * theta);
+      const double numerator = p * (s_plus * s_plus + s_minus * s_minus) -
+                               a * sin_p_theta * std::sin(a * theta);
+      pair = 2 * numerator / ((p / c_ - m) * (p / c_ + m));
     }
-    sum += binomial_weight * pair;
+    sum += (m == 0 ? 1 : 2) * binomial_weight * pair;
     binomial_weight = binomial_weight * (k_ - j) / (j + 1);
   }
-  return sum / 4;
+  return sum / 2;
 }
 
 double KutlogLobe::integral_quadrature() const {
