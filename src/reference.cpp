@@ -49,6 +49,10 @@ void validate_exponent(double n, const char* name) {
   if (!std::isfinite(n) || !(n > 0)) throw_invalid(name, n, "finite and > 0");
 }
 
+void validate_unit_interval(double u, const char* name) {
+  if (!(u >= 0 && u <= 1)) throw_invalid(name, u, "in [0, 1]");
+}
+
 void validate_parameters(double n, int k, double Q) {
   validate_exponent(n);
   if (k < 1 || k > kMaxK)
@@ -71,10 +75,6 @@ double schlick(double t, double n) {
   if (apply_data_rule(t, decided)) return decided;
   return t / (n - n * t + t);
 }
-
-namespace {
-double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-}  // namespace
 
 double blinn_cosine(const Vec3& normal, const Vec3& to_light, const Vec3& to_viewer) {
   const Vec3 sum{to_light.x + to_viewer.x, to_light.y + to_viewer.y, to_light.z + to_viewer.z};
@@ -240,6 +240,10 @@ double albedo_phong(const KutlogLobe& lobe, double coef, double theta_i) {
                     0, limit);
 }
 
+double vcavity_shadowing(double cos_m, double cos_i, double cos_o, double dot_m) {
+  return std::min({1.0, 2 * cos_m * cos_o / dot_m, 2 * cos_m * cos_i / dot_m});
+}
+
 double albedo_blinn(const KutlogLobe& lobe, double coef, double theta_i) {
   // h at angle theta_h from N and azimuth psi (by symmetry psi in [0, pi], doubled):
   // wi.h = cos(theta_i) cos(theta_h) + sin(theta_i) sin(theta_h) cos(psi) = wo.h, and the
@@ -253,9 +257,7 @@ double albedo_blinn(const KutlogLobe& lobe, double coef, double theta_i) {
           const double i_dot_h = cos_i * cos_h + sin_i * sin_h * std::cos(psi);
           const double n_dot_o = 2 * i_dot_h * cos_h - cos_i;
           if (i_dot_h <= 0 || n_dot_o <= 0) return 0.0;
-          const double shadowing = std::min(
-              {1.0, 2 * cos_h * n_dot_o / i_dot_h, 2 * cos_h * cos_i / i_dot_h});  // V-cavity
-          return shadowing * i_dot_h;
+          return vcavity_shadowing(cos_h, cos_i, n_dot_o, i_dot_h) * i_dot_h;
         },
         0, pi, 1e-10);
   };

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cstdio>
 #include <string>
 
@@ -14,13 +15,13 @@ struct LobeCase {
   double Q;
 };
 
-// "n100_k3_Q0_5": gtest allows no dots in names.
+// "n100_k3_Q0_5", "n1e_300_k1_Q0_5": gtest allows only letters, digits and '_' in names.
 inline std::string lobe_case_name(const testing::TestParamInfo<LobeCase>& info) {
   char name[64];
   std::snprintf(name, sizeof name, "n%g_k%d_Q%g", info.param.n, info.param.k, info.param.Q);
   std::string result = name;
   for (char& c : result)
-    if (c == '.') c = '_';
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
   return result;
 }
 

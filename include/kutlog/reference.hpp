@@ -38,6 +38,8 @@ inline constexpr int kMaxK = 64;
 void validate_parameters(double n, int k, double Q);
 // The exponent alone, named as the caller's parameter is (n, n_min, n_max).
 void validate_exponent(double n, const char* name = "n");
+// A uniform random number (or probability) named `name`: finite and in [0, 1].
+void validate_unit_interval(double u, const char* name);
 
 // ---- Lobes from the cosine t = cos x ------------------------------------------------------
 // Rule for data (shared by every lobe here and by the SIMD kernels): t is clamped to [-1, 1]
@@ -55,6 +57,7 @@ double schlick(double t, double n);
 struct Vec3 {
   double x, y, z;
 };
+inline double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 double blinn_cosine(const Vec3& normal, const Vec3& to_light, const Vec3& to_viewer);
 double phong_cosine(const Vec3& normal, const Vec3& to_light, const Vec3& to_viewer);
 
@@ -172,6 +175,10 @@ double albedo_phong(const KutlogLobe& lobe, double coef, double theta_i);
 // into the upper hemisphere. Without G the 1 / cos(theta_i) makes A grow without bound at
 // grazing incidence whatever the lobe.
 double albedo_blinn(const KutlogLobe& lobe, double coef, double theta_i);
+// The V-cavity shadowing-masking term of that BRDF, for the half vector wm at cos_m = N.wm,
+// the two directions at cosines cos_i, cos_o from N, and wi.wm = wo.wm = dot_m > 0:
+// min(1, 2 cos_m cos_o / dot_m, 2 cos_m cos_i / dot_m).
+double vcavity_shadowing(double cos_m, double cos_i, double cos_o, double dot_m);
 
 // ---- Measures used by the article's tables --------------------------------------------------
 
