@@ -12,7 +12,7 @@ constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 Vec3 scaled(const Vec3& v, double s) { return {v.x * s, v.y * s, v.z * s}; }
 Vec3 sum(const Vec3& a, const Vec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 Vec3 difference(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-double length(const Vec3& v) { return std::hypot(v.x, v.y, v.z); }
+double length(const Vec3& v) { return std::sqrt(dot(v, v)); }
 
 // The angle of v from the z axis, from the components: exact for tiny angles.
 double polar_angle(const Vec3& v) { return std::atan2(std::hypot(v.x, v.y), v.z); }
@@ -48,6 +48,12 @@ PolarAngleDistribution::PolarAngleDistribution(double n, int k, double Q, LobeUs
   total_ = lobe_.sine_moment_times_c_squared(limit(), frequency_);
   // c^2 p / (2 pi total) would overflow in c^2 for n near DBL_MAX only after the division.
   density_scale_ = lobe_.c() * (lobe_.c() * frequency_ / (2 * pi * total_));
+  // Bisection alone (from the whole range) for the table: 1100 steps at the most, once.
+  quantiles_[0] = 0;
+  quantiles_[kQuantileCells] = limit();
+  for (int i = 1; i < kQuantileCells; ++i)
+    quantiles_[i] = solve_in_bracket(static_cast<double>(i) / kQuantileCells, 0, limit(),
+                                     0.5 * limit());
 }
 
 double PolarAngleDistribution::solid_angle_density(double theta) const {
@@ -71,10 +77,25 @@ double PolarAngleDistribution::inverse_cdf(double xi) const {
   const double G = limit();
   if (xi == 0) return 0;
   if (xi == 1) return G;
-  // The first guess: in the lobe's own angle u = c theta a narrow lobe's density is near
-  // u cos^k(u) ~ u exp(-k u^2 / 2), whose CDF 1 - exp(-k u^2 / 2) inverts in closed form.
-  double lo = 0, hi = G;
-  double theta = std::sqrt(-2 * std::log1p(-xi) / lobe_.k()) / lobe_.c();
+  // The quantile table brackets theta; the first guess interpolates it as theta behaves at
+  // each end (cdf ~ theta^2 near 0, 1 - cdf ~ (G - theta)^(k+1) near G, where the lobe ends
+  // as cos^k; where G = pi/2 cuts a wider lobe the guess is only rougher) and linearly
+  // between.
+  const double scaled = xi * kQuantileCells;
+  const int cell = std::min(static_cast<int>(scaled), kQuantileCells - 1);
+  const double lo = quantiles_[cell], hi = quantiles_[cell + 1], t = scaled - cell;
+  double guess;
+  if (cell == 0)
+    guess = hi * std::sqrt(t);
+  else if (cell == kQuantileCells - 1)
+    guess = G - (G - lo) * std::pow(1 - t, 1.0 / (lobe_.k() + 1));
+  else
+    guess = lo + (hi - lo) * t;
+  return solve_in_bracket(xi, lo, hi, guess);
+}
+
+double PolarAngleDistribution::solve_in_bracket(double xi, double lo, double hi,
+                                                double theta) const {
   if (!(theta > lo && theta < hi)) theta = 0.5 * (lo + hi);
   double previous_step = hi - lo;
   for (int iteration = 0; iteration < 256; ++iteration) {
@@ -121,17 +142,22 @@ DirectionSample KutlogMicrofacet::sample_half_vector(double u1, double u2) const
 
 std::optional<DirectionSample> KutlogMicrofacet::sample(const Vec3& wo, double u1,
                                                         double u2) const {
-  const DirectionSample wm = sample_half_vector(u1, u2);
+  return reflect(wo, sample_half_vector(u1, u2));
+}
+
+std::optional<DirectionSample> KutlogMicrofacet::reflect(const Vec3& wo,
+                                                         const DirectionSample& wm) const {
   const double wo_dot_wm = dot(wo, wm.direction);
   if (!(wo.z > 0) || !(wo_dot_wm > 0)) return std::nullopt;
   const Vec3 wi = difference(scaled(wm.direction, 2 * wo_dot_wm), wo);
+  if (!(wi.z > 0)) return std::nullopt;
   return DirectionSample{wi, wm.pdf / (4 * wo_dot_wm)};
 }
 
 double KutlogMicrofacet::pdf(const Vec3& wo, const Vec3& wi) const {
+  if (!(wo.z > 0) || !(wi.z > 0)) return 0;
   const Vec3 half = sum(wo, wi);
   const double half_length = length(half);
-  if (!(wo.z > 0) || !(half_length > 0)) return 0;
   const Vec3 wm = scaled(half, 1 / half_length);
   const double wo_dot_wm = dot(wo, wm);
   if (!(wo_dot_wm > 0)) return 0;
@@ -162,11 +188,13 @@ DirectionSample KutlogPhong::sample_in_lobe_frame(double u1, double u2) const {
 std::optional<DirectionSample> KutlogPhong::sample(const Vec3& wo, double u1, double u2) const {
   const DirectionSample local = sample_in_lobe_frame(u1, u2);
   if (!(wo.z > 0)) return std::nullopt;
-  return DirectionSample{from_frame_of(mirror_direction(wo), local.direction), local.pdf};
+  const Vec3 wi = from_frame_of(mirror_direction(wo), local.direction);
+  if (!(wi.z > 0)) return std::nullopt;
+  return DirectionSample{wi, local.pdf};
 }
 
 double KutlogPhong::pdf(const Vec3& wo, const Vec3& wi) const {
-  if (!(wo.z > 0)) return 0;
+  if (!(wo.z > 0) || !(wi.z > 0)) return 0;
   return lobe_angle_.solid_angle_density(angle_between(wi, mirror_direction(wo)));
 }
 
