@@ -52,14 +52,15 @@ class PolarAngleDistribution {
   double solid_angle_density(double theta) const;
   // The density of theta itself: 2 pi sin(theta) solid_angle_density(theta).
   double density(double theta) const;
-  // The CDF of theta, clamped to [0, 1] outside [0, G]. Closed form, error about 1e-16.
+  // The CDF of theta: 0 below 0, 1 from G. Closed form; its rounding is a few 1e-16 (up to
+  // 2e-15 near 1), and it agrees with quadrature of density() to 1e-11 (tests/test_sampling).
   double cdf(double theta) const;
   // The theta with cdf(theta) = xi, xi in [0, 1] (std::invalid_argument otherwise): Newton's
   // iteration on cdf(theta) - xi from a guess interpolated in a table of 64 quantiles, kept
   // inside the bracket the table gives and shrinks, bisecting whenever a Newton step would
-  // leave it or fails to halve the step before; ends when the step is below 2 ulp of theta
-  // (3 to 4 CDF evaluations). |cdf(result) - xi| is within the rounding of the CDF (2e-15
-  // near 1), whatever n.
+  // leave it or fails to halve the step before; ends when the step is below 2 ulp of theta:
+  // 5 to 6 CDF evaluations on average (measured over k = 1, 3, 5, n from 0.01 to 1e300).
+  // |cdf(result) - xi| is within the CDF's rounding, whatever n.
   double inverse_cdf(double xi) const;
   // A direction in the distribution's frame (z = N for microfacet, R for phong) and its
   // solid_angle_density: theta = inverse_cdf(u1), azimuth 2 pi u2; u1, u2 in [0, 1]
