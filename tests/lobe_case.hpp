@@ -5,6 +5,7 @@
 
 #include <cctype>
 #include <cstdio>
+#include <ostream>
 #include <string>
 
 namespace kutlog {
@@ -14,6 +15,11 @@ struct LobeCase {
   int k;
   double Q;
 };
+
+// gtest prints a case as "n=100 k=3 Q=0.5" (not its bytes) in failures and in ctest's names.
+inline void PrintTo(const LobeCase& lobe, std::ostream* os) {
+  *os << "n=" << lobe.n << " k=" << lobe.k << " Q=" << lobe.Q;
+}
 
 // "n100_k3_Q0_5", "n1e_300_k1_Q0_5": gtest allows only letters, digits and '_' in names.
 inline std::string lobe_case_name(const testing::TestParamInfo<LobeCase>& info) {
