@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cstdio>
+#include <ostream>
 #include <string>
 
 namespace kutlog {
@@ -14,13 +16,18 @@ struct LobeCase {
   double Q;
 };
 
-// "n100_k3_Q0_5": gtest allows no dots in names.
+// gtest prints a case as "n=100 k=3 Q=0.5" (not its bytes) in failures and in ctest's names.
+inline void PrintTo(const LobeCase& lobe, std::ostream* os) {
+  *os << "n=" << lobe.n << " k=" << lobe.k << " Q=" << lobe.Q;
+}
+
+// "n100_k3_Q0_5", "n1e_300_k1_Q0_5": gtest allows only letters, digits and '_' in names.
 inline std::string lobe_case_name(const testing::TestParamInfo<LobeCase>& info) {
   char name[64];
   std::snprintf(name, sizeof name, "n%g_k%d_Q%g", info.param.n, info.param.k, info.param.Q);
   std::string result = name;
   for (char& c : result)
-    if (c == '.') c = '_';
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
   return result;
 }
 

@@ -35,7 +35,7 @@ struct Vector {
   Vector operator-() const { return {-x, -y, -z}; }
 };
 
-double dot(const ref::Vec3& a, const ref::Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+using ref::dot;
 
 float component(FuzzedDataProvider& data) {
   static constexpr float kCritical[] = {0.0f, 1.0f, -1.0f, 0x1p-100f, 0.5f};
