@@ -30,11 +30,18 @@ section "kutlog-bench: lobes at n = 1000 against pow (xsimd), every arch, median
   { cat "$out/bench.log"; exit 1; }
 "$build_dir/bench/kutlog-bench" --kutlog_ratios_from="$out/bench.json" | tee "$out/bench.md"
 
-section "figures, renders, white furnace"
+section "figures (data: kutlog-curves, CSV; drawing: matplotlib), renders, white furnace"
+# Debian's Python, where python3-matplotlib is installed (a python3 earlier on PATH may lack it).
+python=${KUTLOG_PYTHON:-/usr/bin/python3}
+draw() {  # draw FIGURE NAME: out/NAME.csv -> out/NAME.png
+  "$python" tools/plot/kutlog_figures.py --figure "$1" --data "$out/$2.csv" --output "$out/$2.png"
+}
 for figure in 2 3 9; do
-  "$tools/kutlog-plot" --figure "$figure" --output "$out/figure-$figure.png"
+  "$tools/kutlog-curves" --figure "$figure" --format csv >"$out/figure-$figure.csv"
+  draw "$figure" "figure-$figure"
 done
-"$tools/kutlog-plot" --figure albedo --n 100 --k 5 --q 0.5 --output "$out/albedo.png"
+"$tools/kutlog-curves" --figure albedo --n 100 --k 5 --q 0.5 --format csv >"$out/albedo.csv"
+draw albedo albedo
 "$tools/kutlog-render" --object sphere --n 100 --k 3 --output "$out/spheres"
 "$tools/kutlog-render" --object teapot --n 100 --k 3 --output "$out/teapot"
 

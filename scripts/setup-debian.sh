@@ -7,7 +7,7 @@ packages=(
   build-essential cmake python3
   libxsimd-dev libgtest-dev libbenchmark-dev libopenimageio-dev libmpfr-dev libcli11-dev
   libfmt-dev nlohmann-json3-dev
-  fonts-dejavu-core
+  fonts-dejavu-core python3-matplotlib
   clang-14 libclang-rt-14-dev
 )
 

@@ -104,9 +104,7 @@ int main(int argc, char** argv) {
   app.add_option("--table", table_name, "Which table: 1, 2, fig4 or coef")
       ->required()
       ->check(CLI::IsMember({"1", "2", "fig4", "coef"}));
-  app.add_option("--format", format_name, "Output format: text, csv or markdown")
-      ->check(CLI::IsMember({"text", "csv", "markdown"}))
-      ->capture_default_str();
+  kutlog::tools::add_format_option(app, format_name);
   app.add_option("--n", n_list, "coef table: exponents n, comma-separated, real > 0")
       ->delimiter(',')
       ->capture_default_str();

@@ -9,7 +9,6 @@
 
 #include "common/cli.hpp"
 #include "common/lobe_errors.hpp"
-#include "common/plot.hpp"
 #include "common/table.hpp"
 #include "common/ulp.hpp"
 #include "kutlog/accuracy.hpp"
@@ -22,7 +21,7 @@ using namespace kutlog::tools;
 struct Row {
   std::string function, arch, variant;
   ErrorStats stats;
-  ErrorProfile profile;  // filled when plotting
+  ErrorProfile profile;  // filled for --profile
 };
 
 std::string format_input(const ErrorStats& stats) {
@@ -30,31 +29,21 @@ std::string format_input(const ErrorStats& stats) {
   return fmt::format("x={:.9g};y={:.9g}", stats.worst_x, stats.worst_y);
 }
 
-// The maximal error per input bucket of every row, a series each, with the bound.
-void draw_errors(const std::vector<Row>& rows, const std::vector<std::string>& functions,
-                 const std::string& path) {
-  const std::string& function = functions.front();
+// The maximal error per input bucket of every row, with the kernel's bound and promise: what
+// tools/plot/kutlog_figures.py --figure ulp draws, a series per row.
+void print_profile(const std::vector<Row>& rows, const std::string& function, Format format) {
   const auto bound = kutlog::find_accuracy_bound(function);
-  Plot plot;
-  plot.title(std::string(bound->kernel) + ": ULP error against the input, every float of " +
-             std::string(bound->domain.substr(0, bound->domain.find(';'))))
-      .x_label(function == "pow" ? "x" : "input")
-      .y_label("max ULP error per bucket");
-  const bool log_x = function == "log" || function == "pow";  // domains spanning decades
-  plot.x_log(log_x);
-  for (const Row& row : rows) {
-    std::vector<double> xs, ys;
-    for (std::size_t b = 0; b < row.profile.max_ulp.size(); ++b) {
-      const bool filled = row.profile.max_ulp[b] >= 0;  // -1: no input fell in the bucket
-      if (filled && (!log_x || row.profile.worst_input[b] > 0))
-        xs.push_back(row.profile.worst_input[b]), ys.push_back(row.profile.max_ulp[b]);
-    }
-    plot.points(function == "pow" ? row.function + " " + row.arch : row.arch, xs, ys);
-  }
-  plot.hline(bound->max_ulp, fmt::format("bound {:.2f} ULP", bound->max_ulp))
-      .hline(bound->promised_ulp, fmt::format("promise {:.1f} ULP", bound->promised_ulp));
-  plot.save(path);
-  std::fprintf(stderr, "kutlog-ulp: wrote %s\n", path.c_str());
+  Table table({"kernel", "domain", "function", "arch", "input", "max_ulp", "bound_ulp",
+               "promised_ulp"});
+  for (const Row& row : rows)
+    for (std::size_t b = 0; b < row.profile.max_ulp.size(); ++b)
+      if (row.profile.max_ulp[b] >= 0)  // -1: no input fell in the bucket
+        table.add_row({std::string(bound->kernel), std::string(bound->domain), row.function,
+                       row.arch, fmt::format("{:.9g}", row.profile.worst_input[b]),
+                       fmt::format("{:.4f}", row.profile.max_ulp[b]),
+                       fmt::format("{:.2f}", bound->max_ulp),
+                       fmt::format("{:.1f}", bound->promised_ulp)});
+  table.print(format);
 }
 
 // One row per kernel: its rows (every arch, every pow exponent set) merged.
@@ -157,9 +146,7 @@ int main(int argc, char** argv) {
                  "Archs, comma-separated (" + compiled_names + "), all, or active (the dispatched one)")
       ->delimiter(',')
       ->capture_default_str();
-  app.add_option("--format", format_name, "Output format: text, csv or markdown")
-      ->check(CLI::IsMember({"text", "csv", "markdown"}))
-      ->capture_default_str();
+  add_format_option(app, format_name);
   std::vector<std::string> variants{"precise", "fast"};
   std::vector<std::string> n_list{"k+1", "10", "100", "1000", "10000"};
   std::vector<int> k_list{1, 2, 3, 4, 5};
@@ -173,10 +160,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--k", k_list, "kutlog: powers k, comma-separated")->delimiter(',')->capture_default_str();
   app.add_option("--q", q_list, "kutlog: anchors Q, comma-separated")->delimiter(',')->capture_default_str();
-  std::string plot_path;
-  app.add_option("--plot", plot_path,
-                 "Draw the error against the input to this PNG (one function; a series per arch, "
-                 "for pow per exponent)");
+  bool profile = false;
+  app.add_flag("--profile", profile,
+               "Instead of one row per sweep, the maximal error per input bucket (one function; "
+               "for tools/plot/kutlog_figures.py --figure ulp)");
   bool summary = false;
   app.add_flag("--summary", summary,
                "One row per kernel: the maximum over the archs (and pow's exponent sets), beside "
@@ -212,8 +199,9 @@ int main(int argc, char** argv) {
       if (name != "pow" && !find_unary_function(name))
         throw std::invalid_argument("unknown function '" + name +
                                     "'; valid: acos, cos, cos_halfpi, exp, log, pow, kutlog");
-    if (!plot_path.empty() && functions.size() != 1)
-      throw std::invalid_argument("--plot draws one --function at a time");
+    if (profile && functions.size() != 1)
+      throw std::invalid_argument("--profile measures one --function at a time");
+    if (profile && summary) throw std::invalid_argument("--profile and --summary exclude each other");
 
     std::vector<Row> rows;
     for (kutlog::Arch arch : archs) {
@@ -225,8 +213,9 @@ int main(int argc, char** argv) {
         const auto add_row = [&](std::string function, const auto& sweep) {
           Row& row = rows.emplace_back();
           row.function = std::move(function), row.arch = arch_label, row.variant = "precise";
-          options.profile = plot_path.empty() ? nullptr : &row.profile;
-          options.profile_linear_in_value = name != "log" && name != "pow";  // as the plot's x axis
+          options.profile = profile ? &row.profile : nullptr;
+          // Buckets as the figure's x axis: logarithmic for the domains spanning decades.
+          options.profile_linear_in_value = name != "log" && name != "pow";
           options.progress_label = row.function + " " + arch_label;
           row.stats = sweep(options);
         };
@@ -240,14 +229,17 @@ int main(int argc, char** argv) {
         for (float y : kPowSweepExponents)
           add_row(fmt::format("pow[y={:g}]", y),
                   [&](const SweepOptions& o) { return sweep_pow_exponent(y, o); });
-        if (plot_path.empty())
+        if (!profile)
           add_row(fmt::format("pow[random {}]", random_pairs),
                   [&](const SweepOptions& o) { return sweep_pow_random(random_pairs, 1, o); });
       }
     }
 
-    if (!plot_path.empty()) draw_errors(rows, functions, plot_path);
     const Format format = parse_format(format_name);
+    if (profile) {
+      print_profile(rows, functions.front(), format);
+      return 0;
+    }
     if (summary) {
       print_summary(rows, functions, format);
       return 0;

@@ -22,8 +22,10 @@
 #include <array>
 #include <optional>
 
+#include "kutlog/api.hpp"
 #include "kutlog/reference.hpp"
 
+KUTLOG_API_BEGIN
 namespace kutlog::ref {
 
 enum class LobeUse { microfacet, phong };
@@ -146,3 +148,4 @@ class KutlogPhong {
 };
 
 }  // namespace kutlog::ref
+KUTLOG_API_END

@@ -6,10 +6,18 @@
 #include <exception>
 #include <functional>
 #include <stdexcept>
+#include <string>
 
 namespace kutlog::tools {
 
 inline constexpr int kExitBadArguments = 2;
+
+// --format, the table's output format (text, csv or markdown; see table.hpp's parse_format).
+inline CLI::Option* add_format_option(CLI::App& app, std::string& format_name) {
+  return app.add_option("--format", format_name, "Output format: text, csv or markdown")
+      ->check(CLI::IsMember({"text", "csv", "markdown"}))
+      ->capture_default_str();
+}
 
 // Parses the command line, then runs `body`. --help prints the usage and exits 0; a bad
 // argument, or a std::invalid_argument thrown by the body (an invalid model parameter), prints
