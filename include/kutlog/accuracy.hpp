@@ -21,16 +21,20 @@ struct AccuracyBound {
   double promised_ulp;
   double max_ulp;
   std::string_view domain;
+  // The floats x the exhaustive sweep covers (kutlog-ulp, tests/test_math_exhaustive.cpp).
+  float sweep_lo, sweep_hi;
 };
 
 inline constexpr AccuracyBound kAccuracyBounds[] = {
-    {"acos_u10", "acos", "precise", 1.0, 0.65, "[-1, 1]"},
-    {"cos_u10", "cos", "precise", 1.0, 0.81, "[-pi, pi]"},
-    {"cos_halfpi_u10", "cos_halfpi", "precise", 1.0, 0.81, "[0, pi/2]"},
-    {"exp_u10", "exp", "precise", 1.0, 0.51, "[-104, 89] (0 or inf beyond)"},
-    {"log_u10", "log", "precise", 1.0, 0.67, "(0, inf)"},
+    {"acos_u10", "acos", "precise", 1.0, 0.65, "[-1, 1]", -1.0f, 1.0f},
+    {"cos_u10", "cos", "precise", 1.0, 0.81, "[-pi, pi]", -3.14159274f, 3.14159274f},
+    {"cos_halfpi_u10", "cos_halfpi", "precise", 1.0, 0.81, "[0, pi/2]", 0.0f, 1.57079637f},
+    {"exp_u10", "exp", "precise", 1.0, 0.51, "[-104, 89] (0 or inf beyond)", -104.0f, 89.0f},
+    {"log_u10", "log", "precise", 1.0, 0.67, "(0, FLT_MAX] (inf for inf)", 0x1p-149f,
+     3.40282347e38f},
     {"pow_u10", "pow", "precise", 1.0, 0.54,
-     "x in (0, 2^8], y in {1, 2, 5, 10, 50, 100, 500, 1000, 5000}; 10^7 random (x, y)"},
+     "x in (0, 2^8], y in {1, 2, 5, 10, 50, 100, 500, 1000, 5000}; 10^7 random (x, y)", 0x1p-149f,
+     256.0f},
 };
 
 // The lobe kernels (kutlog/lobe.hpp), in the units of the value returned, out, against the

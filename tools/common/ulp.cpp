@@ -11,6 +11,7 @@
 #include <random>
 #include <thread>
 
+#include "kutlog/accuracy.hpp"
 #include "kutlog/math.hpp"
 
 namespace kutlog::tools {
@@ -89,8 +90,6 @@ class Accumulator {
   SweepOptions options_;
 };
 
-constexpr float kPi = 3.14159274f, kHalfPi = 1.57079637f;  // float(pi), float(pi/2)
-
 }  // namespace
 
 std::uint32_t order_key(float x) {
@@ -118,19 +117,21 @@ void ErrorStats::merge(const ErrorStats& other) {
   inputs += other.inputs;
 }
 
+// Each function's sweep domain is its row of kutlog/accuracy.hpp: one table for the bounds, the
+// domains they hold on, the tests and this tool.
+UnaryFunction unary_function(std::string_view name, UnaryArray array, double (*reference)(double)) {
+  const AccuracyBound bound = *find_accuracy_bound(name);
+  return {bound.function, bound.kernel, array, reference, bound.sweep_lo, bound.sweep_hi,
+          bound.domain};
+}
+
 const std::vector<UnaryFunction>& unary_functions() {
   static const std::vector<UnaryFunction> functions = {
-      {"acos", "acos_u10", &math::acos_u10, [](double x) { return std::acos(x); }, -1, 1,
-       "[-1, 1]"},
-      {"cos", "cos_u10", &math::cos_u10, [](double x) { return std::cos(x); }, -kPi, kPi,
-       "[-pi, pi]"},
-      {"cos_halfpi", "cos_halfpi_u10", &math::cos_halfpi_u10,
-       [](double x) { return std::cos(x); }, 0, kHalfPi, "[0, pi/2]"},
-      {"exp", "exp_u10", &math::exp_u10, [](double x) { return std::exp(x); }, -104, 89,
-       "[-104, 89]"},
-      {"log", "log_u10", &math::log_u10, [](double x) { return std::log(x); },
-       std::numeric_limits<float>::denorm_min(), std::numeric_limits<float>::max(),
-       "(0, FLT_MAX]"},
+      unary_function("acos", &math::acos_u10, [](double x) { return std::acos(x); }),
+      unary_function("cos", &math::cos_u10, [](double x) { return std::cos(x); }),
+      unary_function("cos_halfpi", &math::cos_halfpi_u10, [](double x) { return std::cos(x); }),
+      unary_function("exp", &math::exp_u10, [](double x) { return std::exp(x); }),
+      unary_function("log", &math::log_u10, [](double x) { return std::log(x); }),
   };
   return functions;
 }
@@ -198,9 +199,11 @@ ErrorStats sweep_unary(const UnaryFunction& function, float lo, float hi,
       [reference = function.reference](float x) { return reference(x); }, std::nanf(""));
 }
 
+constexpr AccuracyBound kPowBound = *find_accuracy_bound("pow");
+
 ErrorStats sweep_pow_exponent(float y, const SweepOptions& options) {
   return sweep(
-      std::numeric_limits<float>::denorm_min(), 256.0f, options,
+      kPowBound.sweep_lo, kPowBound.sweep_hi, options,
       [y](const float* in, float* out, std::size_t n) { math::pow_u10(in, y, out, n); },
       [y](float x) { return std::pow(double(x), double(y)); }, y);
 }
