@@ -38,6 +38,9 @@ if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|amd64)$")
   kutlog_arch(avx2 NAME avx2 XSIMD xsimd::fma3<xsimd::avx2> CPU avx avx2 fma
               FLAGS -mavx2 -mfma)
   kutlog_arch(sse4_1 NAME sse4.1 XSIMD xsimd::sse4_1 CPU sse4_1 FLAGS -msse4.1)
+elseif(CMAKE_SYSTEM_PROCESSOR MATCHES "^(aarch64|arm64|ARM64)$")
+  # Advanced SIMD with double lanes and FMA is part of AArch64: no flags.
+  kutlog_arch(neon64 NAME neon64 XSIMD xsimd::neon64 CPU neon)
 else()
   message(WARNING "kutlog has no SIMD arch for ${CMAKE_SYSTEM_PROCESSOR} (issue 13)")
 endif()

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages kutlog needs to build, test, benchmark and draw. Idempotent:
 # quiet and quick when everything is already there. Run as root.
+#   --aarch64: also the arm64 libraries the aarch64 cross build links (scripts/test-aarch64.sh),
+#              after enabling Debian's arm64 architecture (multiarch) if it is not.
 set -euo pipefail
 
 packages=(
@@ -9,7 +11,12 @@ packages=(
   libfmt-dev nlohmann-json3-dev
   fonts-dejavu-core python3-matplotlib
   clang-14 libclang-rt-14-dev
+  g++-aarch64-linux-gnu qemu-user  # the aarch64 cross build, run under qemu-aarch64
 )
+if [ "${1:-}" = --aarch64 ]; then
+  dpkg --print-foreign-architectures | grep -qx arm64 || dpkg --add-architecture arm64
+  packages+=(libxsimd-dev:arm64 libgtest-dev:arm64 libmpfr-dev:arm64 libfmt-dev:arm64)
+fi
 
 missing=()
 for package in "${packages[@]}"; do

@@ -18,6 +18,7 @@
 #include "kutlog/lobe.hpp"
 #include "kutlog/reference.hpp"
 #include "lobe_case.hpp"
+#include "sweep_samples.hpp"
 
 namespace kutlog {
 
@@ -85,6 +86,20 @@ inline tools::LobeSweep dense_sweep(const Lobe& lobe, double support_samples, do
   return {stride(cut, support_samples), stride(tools::epicenter_edge(lobe), epicenter_samples)};
 }
 
+// Every float of [-1, 1] for every lobe of the grid; under emulation (KUTLOG_SWEEP_SAMPLES,
+// tests/sweep_samples.hpp) that many floats of each lobe's support and as many of its
+// epicenter, where the bounds are tightest, shared among the grid's lobes.
+inline void expect_grid_within_bounds_everywhere(
+    tools::LobeEvaluator evaluate = tools::evaluate_array) {
+  const std::uint64_t samples = sweep_samples();
+  if (samples == 0) return expect_grid_within_bounds(1, evaluate);
+  const double per_lobe = double(samples) / double(accuracy_grid().size());
+  for (const LobeCase& c : accuracy_grid()) {
+    const Lobe lobe(c.n, c.k, c.Q);
+    expect_within_bounds(lobe, tools::measure_lobe(lobe, dense_sweep(lobe, per_lobe, per_lobe), evaluate));
+  }
+}
+
 // Random lobes (random_lobes(count, seed)), each swept through `evaluate` with about
 // `support_samples` floats of its support and `epicenter_samples` of its epicenter.
 inline void expect_random_lobes_within_bounds(int count, unsigned seed, double support_samples,
@@ -95,6 +110,16 @@ inline void expect_random_lobes_within_bounds(int count, unsigned seed, double s
     expect_within_bounds(lobe, tools::measure_lobe(lobe, dense_sweep(lobe, support_samples, epicenter_samples),
                                                    evaluate));
   }
+}
+
+// The dense random-lobe sweep of the exhaustive tests: 24 lobes, 2^21 floats of each support
+// and 2^24 of each epicenter; under emulation, KUTLOG_SWEEP_SAMPLES shared among them.
+inline void expect_random_lobes_densely_within_bounds(
+    tools::LobeEvaluator evaluate = tools::evaluate_array) {
+  constexpr int kLobes = 24;
+  const double samples = double(sweep_samples()) / (2 * kLobes);
+  expect_random_lobes_within_bounds(kLobes, 2027, samples > 0 ? std::min(samples, 0x1p21) : 0x1p21,
+                                    samples > 0 ? std::min(samples, 0x1p24) : 0x1p24, evaluate);
 }
 
 // How a per-lane lobe is called: the array function or the scalar eval per lane.

@@ -57,6 +57,9 @@ struct ErrorProfile {
 };
 
 struct SweepOptions {
+  // 0: every float of the range. Else at most this many, evenly spread (every stride-th by
+  // order key from the low end), for runs under emulation (tests/test_math_exhaustive.cpp).
+  std::uint64_t samples = 0;
   std::string progress_label;  // shown on stderr when it is a terminal; empty: no progress
   unsigned threads = 0;        // 0: every core
   ErrorProfile* profile = nullptr;
@@ -104,11 +107,14 @@ void parallel_for(std::uint64_t tasks, unsigned threads,
                   const std::function<void(std::uint64_t task, unsigned thread)>& work,
                   const std::string& progress_label = "");
 
-// Calls `visit(first_key, count, thread)` on consecutive runs of every float in [lo, hi] (by
-// order key: split at +-0, increasing with the value), in parallel over `threads` threads.
+// Calls `visit(first_key, count, thread)` on runs of every `stride`-th float in [lo, hi] (by
+// order key: split at +-0, increasing with the value; a run is the keys first_key + i stride,
+// i < count), in parallel over `threads` threads.
 void for_each_float(float lo, float hi, unsigned threads,
                     const std::function<void(std::uint32_t first_key, std::size_t count,
                                              unsigned thread)>& visit,
-                    const std::string& progress_label);
+                    const std::string& progress_label, std::uint32_t stride = 1);
+// The stride of SweepOptions::samples over [lo, hi]: 1 for every float.
+std::uint32_t sample_stride(float lo, float hi, std::uint64_t samples);
 
 }  // namespace kutlog::tools

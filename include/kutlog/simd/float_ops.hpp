@@ -28,7 +28,8 @@ template <class Arch>
 inline constexpr bool has_fused_fma =
     std::is_base_of_v<xsimd::fma3<xsimd::sse4_2>, Arch> ||
     std::is_base_of_v<xsimd::fma3<xsimd::avx>, Arch> ||
-    std::is_base_of_v<xsimd::fma3<xsimd::avx2>, Arch> || std::is_base_of_v<xsimd::avx512f, Arch>;
+    std::is_base_of_v<xsimd::fma3<xsimd::avx2>, Arch> || std::is_base_of_v<xsimd::avx512f, Arch> ||
+    std::is_base_of_v<xsimd::neon64, Arch>;
 
 // a * b + c, fused where the arch has FMA. xsimd 8.1 has no AVX-512 fma: its xsimd::fma there
 // is an unfused multiply and add, so AVX-512 gets the intrinsic here.
@@ -55,7 +56,7 @@ inline xsimd::batch<T, Arch> mul_sub(xsimd::batch<T, Arch> a, xsimd::batch<T, Ar
 #endif
   return xsimd::fms(a, b, c);
 }
-// c - a * b
+// c - a * b. xsimd 8.1 has no fused fnma for NEON (a multiply and a subtraction): FMLS there.
 template <class T, class Arch>
 inline xsimd::batch<T, Arch> neg_mul_add(xsimd::batch<T, Arch> a, xsimd::batch<T, Arch> b,
                                          xsimd::batch<T, Arch> c) {
@@ -63,6 +64,12 @@ inline xsimd::batch<T, Arch> neg_mul_add(xsimd::batch<T, Arch> a, xsimd::batch<T
   if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
     if constexpr (std::is_same_v<T, float>) return _mm512_fnmadd_ps(a, b, c);
     if constexpr (std::is_same_v<T, double>) return _mm512_fnmadd_pd(a, b, c);
+  }
+#endif
+#if XSIMD_WITH_NEON64
+  if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
+    if constexpr (std::is_same_v<T, float>) return vfmsq_f32(c, a, b);
+    if constexpr (std::is_same_v<T, double>) return vfmsq_f64(c, a, b);
   }
 #endif
   return xsimd::fnma(a, b, c);
@@ -163,6 +170,7 @@ inline floats<Arch> narrow(doubles<Arch> low, doubles<Arch> high) {
 }
 #endif
 
+#if XSIMD_WITH_SSE2
 template <class Arch>
   requires(arch_of<Arch, xsimd::sse2> && !arch_of<Arch, xsimd::avx>)
 inline Pair<doubles<Arch>> widen(floats<Arch> x) {
@@ -174,6 +182,19 @@ template <class Arch>
 inline floats<Arch> narrow(doubles<Arch> low, doubles<Arch> high) {
   return _mm_movelh_ps(_mm_cvtpd_ps(low), _mm_cvtpd_ps(high));
 }
+#endif
+
+#if XSIMD_WITH_NEON64
+template <arch_of<xsimd::neon64> Arch>
+inline Pair<doubles<Arch>> widen(floats<Arch> x) {
+  const float32x4_t v = x;
+  return {vcvt_f64_f32(vget_low_f32(v)), vcvt_high_f64_f32(v)};
+}
+template <arch_of<xsimd::neon64> Arch>
+inline floats<Arch> narrow(doubles<Arch> low, doubles<Arch> high) {
+  return vcvt_high_f32_f64(vcvt_f32_f64(low), high);
+}
+#endif
 
 // x * 2^n for integer-valued n in [-1022, 1023], one rounding (AVX-512's scalef does it in
 // one instruction).
@@ -188,7 +209,8 @@ inline doubles<Arch> scale_by_exp2(doubles<Arch> x, doubles<Arch> n) {
   return x * xsimd::bitwise_cast<doubles<Arch>>((xsimd::bitwise_cast<U64>(shifted) + U64(1023)) << 52);
 }
 
-// An estimate of 1 / x with 12 bits or better (14 with AVX-512), for double lanes.
+// An estimate of 1 / x with 12 bits or better (14 with AVX-512, 16 with NEON: see
+// kutlog/simd/xsimd.hpp), for double lanes.
 template <class Arch>
 inline doubles<Arch> reciprocal_estimate(doubles<Arch> x) {
 #if XSIMD_WITH_AVX512F

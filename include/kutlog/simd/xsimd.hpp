@@ -28,3 +28,34 @@
 #endif
 
 #include <xsimd/xsimd.hpp>
+
+// xsimd 8.1 on AArch64 (neon64) takes its float division, square root and reciprocal from
+// 32-bit ARM's NEON: a / b and sqrt(x) are estimates refined by two Newton steps (neither
+// correctly rounded, nor right for infinities and subnormals), and reciprocal(x) is the bare
+// FRECPE estimate (8 bits, where x86's rcpps has 12 and the refinements in kutlog assume 12).
+// AArch64 has IEEE division and square root (FDIV, FSQRT): these explicit specializations of
+// xsimd's own kernels make them the ones used, and reciprocal one Newton step (FRECPS) better,
+// 16 bits. Being specializations, not overloads, they need no lookup: they apply wherever
+// xsimd's templates are instantiated after this header, which every kutlog header includes
+// first.
+#if XSIMD_WITH_NEON64
+namespace xsimd::kernel {
+template <>
+inline batch<float, neon64> div<neon64>(batch<float, neon64> const& lhs,
+                                        batch<float, neon64> const& rhs,
+                                        requires_arch<neon>) noexcept {
+  return vdivq_f32(lhs, rhs);
+}
+template <>
+inline batch<float, neon64> sqrt<neon64>(batch<float, neon64> const& x,
+                                         requires_arch<neon>) noexcept {
+  return vsqrtq_f32(x);
+}
+template <>
+inline batch<float, neon64> reciprocal<neon64>(batch<float, neon64> const& x,
+                                               requires_arch<neon>) noexcept {
+  const float32x4_t estimate = vrecpeq_f32(x);
+  return vmulq_f32(estimate, vrecpsq_f32(x, estimate));
+}
+}  // namespace xsimd::kernel
+#endif
