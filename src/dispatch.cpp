@@ -204,9 +204,8 @@ void Lobe::eval(const float* t, float* out, std::size_t count, Variant variant,
   const detail::KernelTable* table = active_table_cache.load(std::memory_order_relaxed);
   if (!table || (normalization == Normalization::exact_coef && !coef_fits_float_)) [[unlikely]]
     return eval_out_of_line(t, out, count, variant, normalization);
-  static_assert(int(Arithmetic::unfused) == 0 && int(Arithmetic::fused) == 1);
-  const int index = (int(variant) * 2 + int(normalization)) * 3 + table->fused_fma;
-  const LobeKernel& chosen = kernels_[0][0][index];  // one multiply, not three
+  const LobeKernel& chosen = kernels_[kernel_index(
+      variant, normalization, table->fused_fma ? Arithmetic::fused : Arithmetic::unfused)];
   table->kutlog_lobe.of(chosen)(chosen, t, out, count);
 }
 void Lobe::eval_out_of_line(const float* t, float* out, std::size_t count, Variant variant,

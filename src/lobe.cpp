@@ -208,7 +208,7 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
       for (Arithmetic arithmetic : {Arithmetic::unfused, Arithmetic::fused, Arithmetic::scalar}) {
         if (normalization == Normalization::exact_coef && !coef_fits_float_) continue;
         const Target& target = variant == Variant::fast ? kFastTarget : kPreciseTarget;
-        kernels_[int(variant)][int(normalization)][int(arithmetic)] = fit_kernel(
+        kernels_[kernel_index(variant, normalization, arithmetic)] = fit_kernel(
             reference, polynomial_series, base_series, w_max,
             normalization == Normalization::exact_coef ? coef_exact_ : 1.0, profile, target,
             arithmetic);

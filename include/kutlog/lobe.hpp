@@ -193,7 +193,7 @@ class Lobe {
   const LobeKernel& kernel(Variant variant, Normalization normalization,
                            Arithmetic arithmetic) const {
     if (normalization == Normalization::exact_coef && !coef_fits_float_) throw_coef_overflow();
-    return kernels_[int(variant)][int(normalization)][int(arithmetic)];
+    return kernels_[kernel_index(variant, normalization, arithmetic)];
   }
 
  private:
@@ -206,7 +206,13 @@ class Lobe {
   int k_;
   double c_, cutoff_angle_, coef_exact_;
   bool coef_fits_float_;
-  LobeKernel kernels_[2][2][3];  // variant, normalization, arithmetic
+  // One kernel per variant, normalization and arithmetic, in one flat array: the array eval
+  // computes the index with one multiply-add.
+  static constexpr int kernel_index(Variant variant, Normalization normalization,
+                                    Arithmetic arithmetic) {
+    return (int(variant) * 2 + int(normalization)) * 3 + int(arithmetic);
+  }
+  LobeKernel kernels_[2 * 2 * 3];
 };
 
 // What the per-lane kernel needs of one material, precomputed (kutlog/simd/lobe.hpp). With
