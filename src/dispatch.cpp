@@ -135,8 +135,6 @@ inline const detail::KernelTable& active_table() {
 
 }  // namespace
 
-const detail::KernelTable& detail::active_kernel_table() { return active_table(); }
-
 std::string_view arch_name(Arch arch) { return entry(arch).name; }
 
 Arch parse_arch(std::string_view name) {
@@ -200,7 +198,7 @@ void pow_u10(const float* x, float y, float* out, std::size_t count) {
 void Lobe::eval(const float* t, float* out, std::size_t count, Variant variant,
                 Normalization normalization) const {
   // Written so that the common call saves no register and ends in a jump to the kernel: the
-  // first call, an overflowing coef (throws) and a forced arch's first call go out of line.
+  // first call (and the first after reset_arch) and an overflowing coef (throws) go out of line.
   const detail::KernelTable* table = active_table_cache.load(std::memory_order_relaxed);
   if (!table || (normalization == Normalization::exact_coef && !coef_fits_float_)) [[unlikely]]
     return eval_out_of_line(t, out, count, variant, normalization);

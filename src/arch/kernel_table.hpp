@@ -52,9 +52,6 @@ struct KernelTable {
   ShadeCosinesKernel shade_cosines;
 };
 
-// The table of the arch in use (kutlog/dispatch.hpp); throws as active_arch() does.
-const KernelTable& active_kernel_table();
-
 // The table of one arch: specialized by src/arch/kernels.cpp, which CMake compiles once per
 // arch of the registry with only that arch's flags.
 template <Arch arch>
