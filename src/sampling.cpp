@@ -19,28 +19,25 @@ using K = SamplerKernel;
 // 2^-24 of theta): small enough not to count against them.
 constexpr double kFitTolerance = 0x1p-26;
 constexpr int kNodes = K::kMaxDegree + 1;
-constexpr int kCheckPoints = 8;  // per cell, between the nodes
+constexpr int kCheckPoints = 4;  // per cell, between the nodes
 
-// One cell of u1: the polynomial approximates g on [lo, hi] (in x = u1, or w = 1 - u1), and
-// theta = weight(x) g(x).
+// One cell of u1: its polynomial approximates g on x in [-1/2, 1/2], and theta = weight(u1) g(x),
+// u1 = lower_u1(x) or 1 - w(x) (see SamplerKernel).
 struct Cell {
   int index;
-  double lo, hi;
-  float center;
   bool lower;
+  double origin, width;  // u1 (lower) or w (upper) = origin + (1/2 + x) width
+  double argument(double x) const { return origin + (0.5 + x) * width; }
 };
 
 std::vector<Cell> cells() {
   std::vector<Cell> result;
-  for (int i = 0; i < K::kLowerCells; ++i) {
-    const double width = 0.5 / K::kLowerCells;
-    result.push_back({i, i * width, (i + 1) * width, float((i + 0.5) * width), true});
-  }
+  const double lower_width = 0.5 / K::kLowerCells;
+  for (int i = 0; i < K::kLowerCells; ++i) result.push_back({i, true, i * lower_width, lower_width});
   for (int exponent = -2; exponent >= -2 - K::kUpperBinades + 1; --exponent)
     for (int band = 0; band < K::kBandsPerBinade; ++band) {
       const double binade = std::ldexp(1.0, exponent), width = binade / K::kBandsPerBinade;
-      result.push_back({K::upper_cell(exponent, band), binade + band * width,
-                        binade + (band + 1) * width, float(binade + (band + 0.5) * width), false});
+      result.push_back({K::upper_cell(exponent, band), false, binade + band * width, width});
     }
   return result;
 }
@@ -71,23 +68,26 @@ LobeSampler::LobeSampler(double n, int k, double Q, LobeUse use)
   kernel_.limit = float(largest_float_at_most(limit_));
   kernel_.density_scale = float(peak);
 
-  // theta = sqrt(u1) g(u1) below 1/2, g(1 - u1) above.
+  // theta = sqrt(u1) g(x) below 1/2, g(x) above.
   const auto theta_of = [&](const Cell& cell, double x) {
-    return cell.lower ? polar.inverse_cdf(x) : polar.inverse_cdf(1 - x);
+    const double argument = cell.argument(x);
+    return cell.lower ? polar.inverse_cdf(argument) : polar.inverse_cdf(1 - argument);
   };
-  const auto weight = [](const Cell& cell, double x) { return cell.lower ? std::sqrt(x) : 1.0; };
+  const auto weight = [](const Cell& cell, double x) {
+    return cell.lower ? std::sqrt(cell.argument(x)) : 1.0;
+  };
   const std::vector<Cell> all = cells();
   std::vector<std::vector<Real>> series;
   int degree = 1;
   for (const Cell& cell : all) {
     series.push_back(detail::chebyshev_coefficients(
-        [&](Real x) { return Real(theta_of(cell, double(x)) / weight(cell, double(x))); }, cell.lo,
-        cell.hi, kNodes));
+        [&](Real x) { return Real(theta_of(cell, double(x)) / weight(cell, double(x))); }, -0.5,
+        0.5, kNodes));
     // The lowest degree whose dropped coefficients sum below the tolerance.
     double tail = 0;
     int needed = K::kMaxDegree;
     for (int j = K::kMaxDegree; j > 0; --j) {
-      tail += double(std::fabs(series.back()[j])) * weight(cell, cell.hi);
+      tail += double(std::fabs(series.back()[j])) * weight(cell, 0.5);
       if (tail > kFitTolerance * limit_) break;
       needed = j - 1;
     }
@@ -97,16 +97,14 @@ LobeSampler::LobeSampler(double n, int k, double Q, LobeUse use)
   for (std::size_t c = 0; c < all.size(); ++c) {
     const Cell& cell = all[c];
     const std::vector<Real> monomials =
-        detail::monomials_from_chebyshev(series[c], degree, cell.lo, cell.hi, cell.center);
-    kernel_.center[cell.index] = cell.center;
+        detail::monomials_from_chebyshev(series[c], degree, -0.5, 0.5, 0);
     for (int j = 0; j <= degree; ++j)
       kernel_.coefficients[j * K::kCells + cell.index] = float(monomials[j]);
     // The fit as the kernel holds it (float coefficients), evaluated in double.
     for (int m = 0; m < kCheckPoints; ++m) {
-      const double x = cell.lo + (m + 0.5) / kCheckPoints * (cell.hi - cell.lo);
+      const double x = (m + 0.5) / kCheckPoints - 0.5;
       double p = kernel_.coefficients[degree * K::kCells + cell.index];
-      for (int j = degree; j-- > 0;)
-        p = p * (x - double(cell.center)) + kernel_.coefficients[j * K::kCells + cell.index];
+      for (int j = degree; j-- > 0;) p = p * x + kernel_.coefficients[j * K::kCells + cell.index];
       fit_error_ = std::max(fit_error_,
                             std::fabs(weight(cell, x) * p - theta_of(cell, x)) / limit_);
     }

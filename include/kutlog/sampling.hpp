@@ -49,12 +49,13 @@ using ref::LobeUse;
 // What a sampling kernel needs of one material, precomputed: plain data, for
 // kutlog/simd/sampling.hpp.
 struct SamplerKernel {
-  // The cells of u1: kLowerCells of width 1/32 over [0, 1/2], then, for u1 > 1/2, by
-  // w = 1 - u1 (exact in float), kBandsPerBinade bands of each binade [2^e, 2^(e+1)) of w,
+  // The cells of u1: kLowerCells of width 1/(2 kLowerCells) over [0, 1/2], then, for u1 > 1/2,
+  // by w = 1 - u1 (exact in float), kBandsPerBinade bands of each binade [2^e, 2^(e+1)) of w,
   // e = -2 down to -24 (1 - u1 >= 2^-24 for a float u1 < 1).
-  static constexpr int kLowerCells = 16;
+  static constexpr int kLowerCells = 32;
   static constexpr int kUpperBinades = 23;
-  static constexpr int kBandsPerBinade = 8;
+  static constexpr int kBandBits = 4;
+  static constexpr int kBandsPerBinade = 1 << kBandBits;
   static constexpr int kCells = kLowerCells + kUpperBinades * kBandsPerBinade;
   static constexpr int kMaxDegree = 8;
   // The cell of u1 > 1/2 whose w lies in band `band` of binade 2^exponent.
@@ -68,10 +69,11 @@ struct SamplerKernel {
   float c = 1;
   float limit = 0;          // G rounded down to a float
   float density_scale = 0;  // the pdf at theta = 0, the peak
-  // The polynomial of cell i is sum_j coefficients[j * kCells + i] (x - center[i])^j, x = u1
-  // (lower cells, times sqrt(u1)) or 1 - u1 (upper cells): coefficient-major, so that a
-  // batch gathers coefficient j of its lanes' cells from one row.
-  std::array<float, kCells> center{};
+  // The polynomial of each cell is sum_j coefficients[j * kCells + cell] x^j in the cell's
+  // own variable x in [-1/2, 1/2]: u1 = (cell + 1/2 + x) / (2 kLowerCells) in a lower cell,
+  // where theta = sqrt(u1) times the polynomial; w = 2^e (1 + (band + 1/2 + x) / B) in an
+  // upper one, where theta is the polynomial. Coefficient-major, so that a batch gathers
+  // coefficient j of its lanes' cells from one row.
   std::array<float, kCells*(kMaxDegree + 1)> coefficients{};
 };
 

@@ -19,31 +19,36 @@ struct SampleBatch {
 
 namespace detail {
 inline constexpr float kLargestBelowOne = 0x1.fffffep-1f;
-inline constexpr float kLargestBelowHalfPi = 1.57079625f;  // cos of it is > 0
 
-// sin and cos of theta in [0, pi/2], each ending in one rounding (as cos_halfpi_u10).
+// sin and cos of r, |r| <= pi/4, by the polynomial cores of sin_u10 and cos_u10 without their
+// compensated last steps: a few float roundings (the sampler's bounds allow them, and they
+// halve its cost).
+template <class Arch>
+inline Pair<floats<Arch>> sin_cos_quarter_pi(floats<Arch> r) {
+  using F = floats<Arch>;
+  const F u = r * r;
+  return {mul_add(r * u, horner(u, constants::kSin), r),
+          mul_add(u * u, horner(u, constants::kCos), neg_mul_add(F(0.5f), u, F(1.0f)))};
+}
+
+// sin and cos of theta in [0, pi/2]: above pi/4 through rho = pi/2 - theta, formed exactly
+// (Sterbenz) but for the low part of pi/2.
 template <class Arch>
 inline Pair<floats<Arch>> sin_cos_halfpi(floats<Arch> theta) {
   using F = floats<Arch>;
-  const Reduced<Arch> reduced = reduce_half_pi(theta);
-  const F u = reduced.r_hi * reduced.r_hi;
-  const F sin_r = sin_reduced(reduced.r_hi, reduced.r_lo, u);
-  const F cos_r = cos_reduced(reduced.r_hi, reduced.r_lo, u);
-  // theta = n pi/2 + r, n in {0, 1}: sin(pi/2 + r) = cos r, cos(pi/2 + r) = -sin r.
-  const auto first_half = reduced.n == F(0.0f);
-  return {xsimd::select(first_half, sin_r, cos_r), xsimd::select(first_half, cos_r, -sin_r)};
+  const auto upper = theta > F(0.78539819f);
+  const F rho = (F(constants::kHalfPiHi) - theta) + F(constants::kHalfPiLo);
+  const auto [sin_r, cos_r] = sin_cos_quarter_pi(xsimd::select(upper, rho, theta));
+  return {xsimd::select(upper, cos_r, sin_r), xsimd::select(upper, sin_r, cos_r)};
 }
 
 // sin and cos of the azimuth 2 pi u, u in [0, 1): 4u = q + f exactly, q an integer in 0..4,
-// |f| <= 1/2, so 2 pi u = q pi/2 + r with r = f pi/2 formed to twice float precision.
+// |f| <= 1/2, so 2 pi u = q pi/2 + r, r = f pi/2.
 template <class Arch>
 inline Pair<floats<Arch>> sin_cos_turn(floats<Arch> u) {
   using F = floats<Arch>;
-  const F four_u = u * F(4.0f), quadrant = xsimd::nearbyint(four_u), f = four_u - quadrant;
-  const Pair<F> r = two_product(f, F(constants::kHalfPiHi));
-  const F r_lo = mul_add(f, F(constants::kHalfPiLo), r.lo);
-  const F square = r.hi * r.hi;
-  const F sin_r = sin_reduced(r.hi, r_lo, square), cos_r = cos_reduced(r.hi, r_lo, square);
+  const F four_u = u * F(4.0f), quadrant = xsimd::nearbyint(four_u);
+  const auto [sin_r, cos_r] = sin_cos_quarter_pi((four_u - quadrant) * F(constants::kHalfPiHi));
   // Quadrant 1: (cos, sin) = (-sin r, cos r); 2: (-cos r, -sin r); 3: (sin r, -cos r); 4 = 0.
   const auto odd = (quadrant == F(1.0f)) | (quadrant == F(3.0f));
   const F negative_cos = xsimd::select((quadrant == F(1.0f)) | (quadrant == F(2.0f)), F(-0.0f),
@@ -70,22 +75,31 @@ class PreparedSampler {
   using I = ints<Arch>;
 
   explicit PreparedSampler(const SamplerKernel& kernel)
-      : kernel_(kernel), c_(kernel.c), limit_(kernel.limit), peak_(kernel.density_scale) {}
+      : kernel_(kernel), half_c_(0.5f * kernel.c), limit_(kernel.limit),
+        peak_(kernel.density_scale) {}
 
   // The polar angle theta(u1) of the fitted inverse CDF, in [0, limit]; u1 in [0, 1).
   F polar_angle(F u1) const {
     using K = SamplerKernel;
-    static_assert(K::kBandsPerBinade == 8, "the band is the top 3 bits of w's mantissa");
     const auto lower = u1 <= F(0.5f);
-    const F w = F(1.0f) - u1;  // exact for u1 >= 1/2
-    // w's exponent field and top 3 mantissa bits: s = (e + 127) * 8 + band, so that
-    // K::upper_cell(e, band) = kLowerCells + (125 - (e + 127)) * 8 + band.
-    const I s = xsimd::bitwise_cast<I>(w) >> 20;
-    const I upper = I(K::kLowerCells + 125 * K::kBandsPerBinade) - s + ((s & I(7)) << 1);
-    const I cell = xsimd::to_int(
-        xsimd::select(lower, xsimd::min(u1 * F(2 * K::kLowerCells), F(K::kLowerCells - 1)),
-                      xsimd::to_float(upper)));
-    const F x = xsimd::select(lower, u1, w) - F::gather(kernel_.center.data(), cell);
+    // Lower cells: 2 L u1 = cell + 1/2 + x exactly.
+    const F scaled = u1 * F(2 * K::kLowerCells);
+    const F lower_cell = xsimd::min(xsimd::floor(scaled), F(K::kLowerCells - 1));
+    const F lower_x = (scaled - lower_cell) - F(0.5f);
+    // Upper cells, by the bits of w = 1 - u1 (exact for u1 >= 1/2): the exponent field and the
+    // top kBandBits of the mantissa give s = (e + 127) B + band, so that
+    // upper_cell(e, band) = kLowerCells + (125 - (e + 127)) B + band; the mantissa's other bits,
+    // as a float in [1, 2), give 1.5 + x.
+    constexpr int kFractionBits = 23 - K::kBandBits;
+    const I bits = xsimd::bitwise_cast<I>(F(1.0f) - u1);
+    const I s = bits >> kFractionBits;
+    const I upper_cell =
+        I(K::kLowerCells + 125 * K::kBandsPerBinade) - s + ((s & I(K::kBandsPerBinade - 1)) << 1);
+    const F upper_x = xsimd::bitwise_cast<F>(((bits & I((1 << kFractionBits) - 1)) << K::kBandBits) |
+                                             I(0x3f800000)) -
+                      F(1.5f);
+    const I cell = xsimd::select(xsimd::bool_cast(lower), xsimd::to_int(lower_cell), upper_cell);
+    const F x = xsimd::select(lower, lower_x, upper_x);
     const float* row = kernel_.coefficients.data() + kernel_.degree * K::kCells;
     F p = F::gather(row, cell);
     for (int j = kernel_.degree; j-- > 0;) {
@@ -100,8 +114,11 @@ class PreparedSampler {
     const F theta = polar_angle(detail::unit_interval(u1));
     const auto [sin_theta, cos_theta] = detail::sin_cos_halfpi(theta);
     const auto [sin_phi, cos_phi] = detail::sin_cos_turn(detail::unit_interval(u2));
-    const F lobe = detail::integer_power(
-        cos_halfpi_u10(xsimd::min(c_ * theta, F(detail::kLargestBelowHalfPi))), kernel_.k);
+    // F = cos^k(c theta), cos(c theta) = 1 - 2 sin^2(c theta / 2), c theta in [0, pi/2].
+    const F half_angle = half_c_ * theta;
+    const F sin_half = detail::sin_cos_quarter_pi(half_angle).hi;
+    const F lobe = detail::integer_power(neg_mul_add(F(2.0f) * sin_half, sin_half, F(1.0f)),
+                                         kernel_.k);
     const F density = kernel_.cosine_weighted ? peak_ * lobe * cos_theta : peak_ * lobe;
     const auto valid = (u1 == u1) & (u2 == u2);
     const F nan(std::numeric_limits<float>::quiet_NaN());
@@ -112,7 +129,7 @@ class PreparedSampler {
 
  private:
   const SamplerKernel& kernel_;
-  F c_, limit_, peak_;
+  F half_c_, limit_, peak_;
 };
 
 }  // namespace kutlog::simd
