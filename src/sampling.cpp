@@ -1,5 +1,6 @@
 #include "kutlog/sampling.hpp"
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
@@ -18,11 +19,9 @@ using K = SamplerKernel;
 // The fit's own error, in units of G, before the float evaluation adds its roundings (a few
 // 2^-24 of theta): small enough not to count against them.
 constexpr double kFitTolerance = 0x1p-26;
-constexpr int kNodes = K::kMaxDegree + 1;
 constexpr int kCheckPoints = 4;  // per cell, between the nodes
 
-// One cell of u1: its polynomial approximates g on x in [-1/2, 1/2], and theta = weight(u1) g(x),
-// u1 = lower_u1(x) or 1 - w(x) (see SamplerKernel).
+// One cell of u1 (see SamplerCells): theta = weight(x) g(x), x in [-1/2, 1/2].
 struct Cell {
   int index;
   bool lower;
@@ -30,14 +29,15 @@ struct Cell {
   double argument(double x) const { return origin + (0.5 + x) * width; }
 };
 
-std::vector<Cell> cells() {
+std::vector<Cell> cells_of(SamplerCells layout) {
   std::vector<Cell> result;
-  const double lower_width = 0.5 / K::kLowerCells;
-  for (int i = 0; i < K::kLowerCells; ++i) result.push_back({i, true, i * lower_width, lower_width});
-  for (int exponent = -2; exponent >= -2 - K::kUpperBinades + 1; --exponent)
-    for (int band = 0; band < K::kBandsPerBinade; ++band) {
-      const double binade = std::ldexp(1.0, exponent), width = binade / K::kBandsPerBinade;
-      result.push_back({K::upper_cell(exponent, band), false, binade + band * width, width});
+  const double lower_width = 0.5 / layout.lower_cells;
+  for (int i = 0; i < layout.lower_cells; ++i)
+    result.push_back({i, true, i * lower_width, lower_width});
+  for (int exponent = -2; exponent >= -2 - SamplerCells::kUpperBinades + 1; --exponent)
+    for (int band = 0; band < layout.bands(); ++band) {
+      const double binade = std::ldexp(1.0, exponent), width = binade / layout.bands();
+      result.push_back({layout.upper_cell(exponent, band), false, binade + band * width, width});
     }
   return result;
 }
@@ -45,6 +45,56 @@ std::vector<Cell> cells() {
 double largest_float_at_most(double x) {
   const float rounded = float(x);
   return double(rounded) <= x ? rounded : std::nextafter(rounded, 0.0f);
+}
+
+struct Fit {
+  int degree;
+  double error;  // the largest |theta_fit - inverse_cdf| / G at the check points
+};
+
+// Fits theta(u1) in every cell of `layout` with one degree, the lowest (up to max_degree) whose
+// dropped Chebyshev coefficients sum below the tolerance in every cell; coefficient j of cell i
+// into coefficients[j * stride + i], as floats; then checks the fit as stored, in double.
+Fit fit_cells(const ref::PolarAngleDistribution& polar, SamplerCells layout, int max_degree,
+              int stride, float* coefficients) {
+  const double G = polar.limit();
+  const auto theta_of = [&](const Cell& cell, double x) {
+    const double argument = cell.argument(x);
+    return cell.lower ? polar.inverse_cdf(argument) : polar.inverse_cdf(1 - argument);
+  };
+  const auto weight = [](const Cell& cell, double x) {
+    return cell.lower ? std::sqrt(cell.argument(x)) : 1.0;
+  };
+  const std::vector<Cell> all = cells_of(layout);
+  std::vector<std::vector<Real>> series;
+  Fit fit{1, 0};
+  for (const Cell& cell : all) {
+    series.push_back(detail::chebyshev_coefficients(
+        [&](Real x) { return Real(theta_of(cell, double(x)) / weight(cell, double(x))); }, -0.5,
+        0.5, max_degree + 1));
+    double tail = 0;
+    int needed = max_degree;
+    for (int j = max_degree; j > 0; --j) {
+      tail += double(std::fabs(series.back()[j])) * weight(cell, 0.5);
+      if (tail > kFitTolerance * G) break;
+      needed = j - 1;
+    }
+    fit.degree = std::max(fit.degree, needed);
+  }
+  for (std::size_t c = 0; c < all.size(); ++c) {
+    const Cell& cell = all[c];
+    const std::vector<Real> monomials =
+        detail::monomials_from_chebyshev(series[c], fit.degree, -0.5, 0.5, 0);
+    float* const column = coefficients + cell.index;
+    for (int j = 0; j <= fit.degree; ++j) column[j * stride] = float(monomials[j]);
+    for (int m = 0; m < kCheckPoints; ++m) {
+      const double x = (m + 0.5) / kCheckPoints - 0.5;
+      double p = column[fit.degree * stride];
+      for (int j = fit.degree; j-- > 0;) p = p * x + column[j * stride];
+      fit.error = std::max(fit.error, std::fabs(weight(cell, x) * p - theta_of(cell, x)) / G);
+    }
+  }
+  return fit;
 }
 
 }  // namespace
@@ -67,48 +117,13 @@ LobeSampler::LobeSampler(double n, int k, double Q, LobeUse use)
   kernel_.c = float(polar.lobe().c());
   kernel_.limit = float(largest_float_at_most(limit_));
   kernel_.density_scale = float(peak);
-
-  // theta = sqrt(u1) g(x) below 1/2, g(x) above.
-  const auto theta_of = [&](const Cell& cell, double x) {
-    const double argument = cell.argument(x);
-    return cell.lower ? polar.inverse_cdf(argument) : polar.inverse_cdf(1 - argument);
-  };
-  const auto weight = [](const Cell& cell, double x) {
-    return cell.lower ? std::sqrt(cell.argument(x)) : 1.0;
-  };
-  const std::vector<Cell> all = cells();
-  std::vector<std::vector<Real>> series;
-  int degree = 1;
-  for (const Cell& cell : all) {
-    series.push_back(detail::chebyshev_coefficients(
-        [&](Real x) { return Real(theta_of(cell, double(x)) / weight(cell, double(x))); }, -0.5,
-        0.5, kNodes));
-    // The lowest degree whose dropped coefficients sum below the tolerance.
-    double tail = 0;
-    int needed = K::kMaxDegree;
-    for (int j = K::kMaxDegree; j > 0; --j) {
-      tail += double(std::fabs(series.back()[j])) * weight(cell, 0.5);
-      if (tail > kFitTolerance * limit_) break;
-      needed = j - 1;
-    }
-    degree = std::max(degree, needed);
-  }
-  kernel_.degree = degree;
-  for (std::size_t c = 0; c < all.size(); ++c) {
-    const Cell& cell = all[c];
-    const std::vector<Real> monomials =
-        detail::monomials_from_chebyshev(series[c], degree, -0.5, 0.5, 0);
-    for (int j = 0; j <= degree; ++j)
-      kernel_.coefficients[j * K::kCells + cell.index] = float(monomials[j]);
-    // The fit as the kernel holds it (float coefficients), evaluated in double.
-    for (int m = 0; m < kCheckPoints; ++m) {
-      const double x = (m + 0.5) / kCheckPoints - 0.5;
-      double p = kernel_.coefficients[degree * K::kCells + cell.index];
-      for (int j = degree; j-- > 0;) p = p * x + kernel_.coefficients[j * K::kCells + cell.index];
-      fit_error_ = std::max(fit_error_,
-                            std::fabs(weight(cell, x) * p - theta_of(cell, x)) / limit_);
-    }
-  }
+  const Fit fine = fit_cells(polar, K::kFine, K::kFineMaxDegree, K::kFine.count(),
+                             kernel_.fine.data());
+  const Fit coarse = fit_cells(polar, K::kCoarse, K::kCoarseMaxDegree, K::kCoarseStride,
+                               kernel_.coarse.data());
+  kernel_.fine_degree = fine.degree;
+  kernel_.coarse_degree = coarse.degree;
+  fit_error_ = std::max(fine.error, coarse.error);
 }
 
 }  // namespace kutlog

@@ -35,10 +35,13 @@ struct Samples {
   explicit Samples(std::size_t count) : x(count), y(count), z(count), pdf(count) {}
   DirectionSamples out() { return {x.data(), y.data(), z.data(), pdf.data()}; }
   // The angle of sample i from the z axis, from the components (exact for tiny angles).
-  double theta(std::size_t i) const { return std::atan2(std::hypot(double(x[i]), double(y[i])), double(z[i])); }
+  double theta(std::size_t i) const {
+    return std::atan2(std::hypot(double(x[i]), double(y[i])), double(z[i]));
+  }
 };
 
-Samples draw(const LobeSampler& sampler, const std::vector<float>& u1, const std::vector<float>& u2) {
+Samples draw(const LobeSampler& sampler, const std::vector<float>& u1,
+             const std::vector<float>& u2) {
   Samples samples(u1.size());
   sampler.sample(u1.data(), u2.data(), samples.out(), u1.size());
   return samples;
@@ -195,7 +198,8 @@ TEST_P(LobeSamplerChiSquare, DirectionsMatchReferencePdf) {
     std::vector<ref::Vec3> directions(kDraws);
     for (int i = 0; i < kDraws; ++i) directions[i] = {samples.x[i], samples.y[i], samples.z[i]};
     const auto pdf = [&](const ref::Vec3& w) {
-      return use == LobeUse::microfacet ? microfacet.pdf_half_vector(w) : phong.pdf_in_lobe_frame(w);
+      return use == LobeUse::microfacet ? microfacet.pdf_half_vector(w)
+                                        : phong.pdf_in_lobe_frame(w);
     };
     const auto result = ref::chi_square(ref::DirectionBins({0, 0, 1}, G, kResAlpha, kResPsi),
                                         directions, pdf, kDraws);

@@ -10,13 +10,14 @@
 // frame and reflecting are the caller's (ref::KutlogMicrofacet::reflect says how).
 //
 // How it is fast: the setup fits the polar angle's inverse CDF, theta(u1), once per material
-// (a few milliseconds; no allocation per call), as piecewise polynomials in variables that
-// make it smooth: theta = sqrt(u1) P(u1) on u1 <= 1/2 (cdf ~ theta^2 near the peak), and
+// (milliseconds; no allocation per call), as piecewise polynomials in variables that make it
+// smooth: theta = sqrt(u1) P(u1) on u1 <= 1/2 (cdf ~ theta^2 near the peak), and
 // theta = P(1 - u1) on 1/2 < u1 < 1 in cells of each binade of 1 - u1 (1 - cdf vanishes as a
 // power of the distance to the cut-off), each fit checked against
-// ref::PolarAngleDistribution::inverse_cdf at setup. A batch then gathers its cells'
-// coefficients, runs Horner's rule, and takes the sines and cosines of theta and of the
-// azimuth 2 pi u2 and F(theta) from kutlog's own kernels (kutlog/simd/math.hpp): no pow.
+// ref::PolarAngleDistribution::inverse_cdf at setup. A batch then looks its cells'
+// coefficients up, runs Horner's rule, and takes the sines and cosines of theta, of the
+// azimuth 2 pi u2 and of c theta (for F) from the polynomial cores of kutlog's sin and cos
+// (kutlog/simd/math.hpp): no pow.
 //
 // Contract, on every arch (kutlog/accuracy.hpp has the numbers, tests/test_lobe_sampler.cpp
 // asserts them): with theta the angle of the returned direction from z,
@@ -46,35 +47,43 @@ namespace kutlog {
 
 using ref::LobeUse;
 
-// What a sampling kernel needs of one material, precomputed: plain data, for
-// kutlog/simd/sampling.hpp.
-struct SamplerKernel {
-  // The cells of u1: kLowerCells of width 1/(2 kLowerCells) over [0, 1/2], then, for u1 > 1/2,
-  // by w = 1 - u1 (exact in float), kBandsPerBinade bands of each binade [2^e, 2^(e+1)) of w,
-  // e = -2 down to -24 (1 - u1 >= 2^-24 for a float u1 < 1).
-  static constexpr int kLowerCells = 32;
+// How u1 is cut into cells: lower_cells of width 1/(2 lower_cells) over [0, 1/2], then, for
+// u1 > 1/2, by w = 1 - u1 (exact in float), 2^band_bits bands of each binade [2^e, 2^(e+1)) of
+// w, e = -2 down to -24 (1 - u1 >= 2^-24 for a float u1 < 1). Each cell has its own variable
+// x in [-1/2, 1/2]: u1 = (cell + 1/2 + x) / (2 lower_cells) in a lower cell, where theta is
+// sqrt(u1) times the cell's polynomial in x; w = 2^e (1 + (band + 1/2 + x) / 2^band_bits) in
+// an upper one, where theta is the polynomial.
+struct SamplerCells {
   static constexpr int kUpperBinades = 23;
-  static constexpr int kBandBits = 4;
-  static constexpr int kBandsPerBinade = 1 << kBandBits;
-  static constexpr int kCells = kLowerCells + kUpperBinades * kBandsPerBinade;
-  static constexpr int kMaxDegree = 8;
+  int lower_cells, band_bits;
+  constexpr int bands() const { return 1 << band_bits; }
+  constexpr int count() const { return lower_cells + kUpperBinades * bands(); }
   // The cell of u1 > 1/2 whose w lies in band `band` of binade 2^exponent.
-  static constexpr int upper_cell(int exponent, int band) {
-    return kLowerCells + (-2 - exponent) * kBandsPerBinade + band;
+  constexpr int upper_cell(int exponent, int band) const {
+    return lower_cells + (-2 - exponent) * bands() + band;
   }
+};
 
-  int degree = 0;  // of every cell's polynomial
+// What a sampling kernel needs of one material, precomputed: plain data, for
+// kutlog/simd/sampling.hpp. The inverse CDF is fitted twice, in two tables an arch chooses
+// between by what a lookup costs it: `fine`, 400 cells of low degree (cubics), read with
+// gathers; `coarse`, 31 cells of higher degree, which AVX-512 holds in two registers per
+// coefficient and reads with one permute (vpermi2ps) instead of a gather.
+struct SamplerKernel {
+  static constexpr SamplerCells kFine{32, 4}, kCoarse{8, 0};
+  static constexpr int kFineMaxDegree = 8, kCoarseMaxDegree = 12;
+  static constexpr int kCoarseStride = 32;  // two registers of 16 floats per coefficient
+
+  int fine_degree = 0, coarse_degree = 0;  // of every cell's polynomial
   int k = 1;
   bool cosine_weighted = true;  // microfacet: the pdf has the factor cos(theta)
   float c = 1;
   float limit = 0;          // G rounded down to a float
   float density_scale = 0;  // the pdf at theta = 0, the peak
-  // The polynomial of each cell is sum_j coefficients[j * kCells + cell] x^j in the cell's
-  // own variable x in [-1/2, 1/2]: u1 = (cell + 1/2 + x) / (2 kLowerCells) in a lower cell,
-  // where theta = sqrt(u1) times the polynomial; w = 2^e (1 + (band + 1/2 + x) / B) in an
-  // upper one, where theta is the polynomial. Coefficient-major, so that a batch gathers
-  // coefficient j of its lanes' cells from one row.
-  std::array<float, kCells*(kMaxDegree + 1)> coefficients{};
+  // Coefficient j of cell i at [j * stride + i] (stride kFine.count(), kCoarseStride):
+  // coefficient-major, so that a batch looks coefficient j of its lanes' cells up in one row.
+  std::array<float, kFine.count() * (kFineMaxDegree + 1)> fine{};
+  std::array<float, kCoarseStride*(kCoarseMaxDegree + 1)> coarse{};
 };
 
 // Where the sampler writes: four arrays of count floats each.
@@ -100,8 +109,8 @@ class LobeSampler {
   LobeUse use() const { return use_; }
   // The support G of the polar angle.
   double limit() const { return limit_; }
-  // The largest |theta_fit - inverse_cdf| / G the setup saw at its check points, with the fit
-  // evaluated in double: what the polynomials contribute to the contract's theta_error.
+  // The largest |theta_fit - inverse_cdf| / G the setup saw at its check points, with either
+  // fit evaluated in double: what the polynomials contribute to the contract's theta_error.
   double fit_error() const { return fit_error_; }
   const SamplerKernel& kernel() const { return kernel_; }
 

@@ -59,6 +59,51 @@ inline Pair<floats<Arch>> sin_cos_turn(floats<Arch> u) {
           xsimd::select(odd, sin_r, cos_r) ^ negative_cos};
 }
 
+// The cell of u1 in [0, 1) in the layout `cells` (kutlog/sampling.hpp's SamplerCells), and
+// u1's position x in it.
+template <class Arch>
+struct CellPosition {
+  ints<Arch> cell;
+  floats<Arch> x;
+  xsimd::batch_bool<float, Arch> lower;
+};
+template <SamplerCells cells, class Arch>
+inline CellPosition<Arch> locate(floats<Arch> u1) {
+  using F = floats<Arch>;
+  using I = ints<Arch>;
+  const auto lower = u1 <= F(0.5f);
+  // Lower cells: 2 L u1 = cell + 1/2 + x exactly.
+  const F scaled = u1 * F(2 * cells.lower_cells);
+  const F lower_cell = xsimd::min(xsimd::floor(scaled), F(cells.lower_cells - 1));
+  // Upper cells, by the bits of w = 1 - u1 (exact for u1 >= 1/2): the exponent field and the
+  // top band_bits of the mantissa give s = (e + 127) B + band, so that
+  // upper_cell(e, band) = L + (125 - (e + 127)) B + band; the mantissa's other bits, as a
+  // float in [1, 2), give 1.5 + x.
+  constexpr int kFractionBits = 23 - cells.band_bits;
+  const I bits = xsimd::bitwise_cast<I>(F(1.0f) - u1);
+  const I s = bits >> kFractionBits;
+  const I upper_cell =
+      I(cells.lower_cells + 125 * cells.bands()) - s + ((s & I(cells.bands() - 1)) << 1);
+  const I fraction = (bits & I((1 << kFractionBits) - 1)) << cells.band_bits;
+  const F upper_x = xsimd::bitwise_cast<F>(fraction | I(0x3f800000)) - F(1.5f);
+  return {xsimd::select(xsimd::bool_cast(lower), xsimd::to_int(lower_cell), upper_cell),
+          xsimd::select(lower, (scaled - lower_cell) - F(0.5f), upper_x), lower};
+}
+
+// Horner's rule over coefficient rows (row j at coefficients + j * stride), each lane's
+// coefficients looked up by its cell with `lookup(row, cell)`.
+template <class Arch, class Lookup>
+inline floats<Arch> cell_polynomial(const float* coefficients, int degree, int stride,
+                                    const CellPosition<Arch>& at, Lookup lookup) {
+  const float* row = coefficients + degree * stride;
+  floats<Arch> p = lookup(row, at.cell);
+  for (int j = degree; j-- > 0;) {
+    row -= stride;
+    p = mul_add(p, at.x, lookup(row, at.cell));
+  }
+  return p;
+}
+
 // u in [0, 1): below 0 (and NaN) to 0, from 1 up to the largest float below 1.
 template <class Arch>
 inline floats<Arch> unit_interval(floats<Arch> u) {
@@ -79,32 +124,28 @@ class PreparedSampler {
         peak_(kernel.density_scale) {}
 
   // The polar angle theta(u1) of the fitted inverse CDF, in [0, limit]; u1 in [0, 1).
+  // AVX-512 looks the coarse table up with permutes (a gather of 16 lanes costs about 16
+  // loads, a two-register permute one instruction); the other archs gather from the fine one.
   F polar_angle(F u1) const {
     using K = SamplerKernel;
-    const auto lower = u1 <= F(0.5f);
-    // Lower cells: 2 L u1 = cell + 1/2 + x exactly.
-    const F scaled = u1 * F(2 * K::kLowerCells);
-    const F lower_cell = xsimd::min(xsimd::floor(scaled), F(K::kLowerCells - 1));
-    const F lower_x = (scaled - lower_cell) - F(0.5f);
-    // Upper cells, by the bits of w = 1 - u1 (exact for u1 >= 1/2): the exponent field and the
-    // top kBandBits of the mantissa give s = (e + 127) B + band, so that
-    // upper_cell(e, band) = kLowerCells + (125 - (e + 127)) B + band; the mantissa's other bits,
-    // as a float in [1, 2), give 1.5 + x.
-    constexpr int kFractionBits = 23 - K::kBandBits;
-    const I bits = xsimd::bitwise_cast<I>(F(1.0f) - u1);
-    const I s = bits >> kFractionBits;
-    const I upper_cell =
-        I(K::kLowerCells + 125 * K::kBandsPerBinade) - s + ((s & I(K::kBandsPerBinade - 1)) << 1);
-    const F upper_x = xsimd::bitwise_cast<F>(((bits & I((1 << kFractionBits) - 1)) << K::kBandBits) |
-                                             I(0x3f800000)) -
-                      F(1.5f);
-    const I cell = xsimd::select(xsimd::bool_cast(lower), xsimd::to_int(lower_cell), upper_cell);
-    const F x = xsimd::select(lower, lower_x, upper_x);
-    const float* row = kernel_.coefficients.data() + kernel_.degree * K::kCells;
-    F p = F::gather(row, cell);
-    for (int j = kernel_.degree; j-- > 0;) {
-      row -= K::kCells;
-      p = mul_add(p, x, F::gather(row, cell));
+    F p;
+    xsimd::batch_bool<float, Arch> lower;
+#if XSIMD_WITH_AVX512F
+    if constexpr (arch_of<Arch, xsimd::avx512f>) {
+      const detail::CellPosition<Arch> at = detail::locate<K::kCoarse>(u1);
+      p = detail::cell_polynomial(kernel_.coarse.data(), kernel_.coarse_degree, K::kCoarseStride,
+                                  at, [](const float* row, I cell) -> F {
+                                    return _mm512_permutex2var_ps(_mm512_loadu_ps(row), cell,
+                                                                  _mm512_loadu_ps(row + 16));
+                                  });
+      lower = at.lower;
+    } else
+#endif
+    {
+      const detail::CellPosition<Arch> at = detail::locate<K::kFine>(u1);
+      p = detail::cell_polynomial(kernel_.fine.data(), kernel_.fine_degree, K::kFine.count(), at,
+                                  [](const float* row, I cell) { return F::gather(row, cell); });
+      lower = at.lower;
     }
     const F theta = xsimd::select(lower, xsimd::sqrt(u1) * p, p);
     return xsimd::min(xsimd::max(theta, F(0.0f)), limit_);
