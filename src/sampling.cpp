@@ -19,7 +19,7 @@ using K = SamplerKernel;
 // The fit's own error, in units of G, before the float evaluation adds its roundings (a few
 // 2^-24 of theta): small enough not to count against them.
 constexpr double kFitTolerance = 0x1p-26;
-constexpr int kCheckPoints = 4;  // per cell, between the nodes
+constexpr int kCheckPoints = 2;  // per cell, between the nodes
 
 // One cell of u1 (see SamplerCells): theta = weight(x) g(x), x in [-1/2, 1/2].
 struct Cell {

@@ -71,7 +71,7 @@ struct SamplerCells {
 // coefficient and reads with one permute (vpermi2ps) instead of a gather.
 struct SamplerKernel {
   static constexpr SamplerCells kFine{32, 4}, kCoarse{8, 0};
-  static constexpr int kFineMaxDegree = 8, kCoarseMaxDegree = 12;
+  static constexpr int kFineMaxDegree = 5, kCoarseMaxDegree = 12;
   static constexpr int kCoarseStride = 32;  // two registers of 16 floats per coefficient
 
   int fine_degree = 0, coarse_degree = 0;  // of every cell's polynomial
