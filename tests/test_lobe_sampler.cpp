@@ -2,6 +2,20 @@
 // reference's inverse CDF and its pdf against the reference's density of the direction it
 // returns (the bounds of kutlog/accuracy.hpp), the data rule, validation; and the chi-square
 // test of tests/test_sampling.cpp on its directions, on the active arch.
+//
+// Each test was seen to fail on planted bugs (2026-12-02; the chi-square run on 3 lobes of the
+// grid for those runs):
+//   the peak pdf 2 % high (src/sampling.cpp): GridWithinBounds, RandomLobesWithinBounds on
+//     every arch (pdf above the reference's peak); the chi-square passes, as it must (the
+//     directions are right);
+//   every pdf 2 % low (kutlog/simd/sampling.hpp): GridWithinBounds, RandomLobesWithinBounds on
+//     every arch (pdf error 0.02 of the peak against the bound's 4.8e-7);
+//   the pdf's power k + 1: GridWithinBounds, RandomLobesWithinBounds on every arch;
+//   the inverse CDF fitted for k + 1: the same, and LobeSamplerChiSquare on all 3 lobes;
+//   NaN not carried to z: DataRuleAndTails on every arch;
+//   the azimuth's angle within each quadrant scaled by 1.5 / (pi/2): LobeSamplerChiSquare on
+//     all 3 lobes, and nothing else (the bounds see the polar angle and the pdf only). (Swapping
+//     two quadrants is no bug a test can see: the azimuth stays uniform.)
 #include <gtest/gtest.h>
 
 #include <cfloat>
