@@ -4,8 +4,8 @@
 //   kutlog-bench --kutlog_ratios_from=FILE.json
 //   kutlog-bench --kutlog_setup
 //
-// --kutlog_setup prints the median and worst construction time of a Lobe and a PerLaneLobe
-// over 200 random materials, and runs nothing else.
+// --kutlog_setup prints the median and worst construction time of a Lobe, a PerLaneLobe and a
+// LobeSampler over 200 random materials, and runs nothing else.
 // --kutlog_ratios prints, after the run, the throughput ratios of kutlog's kernels to their
 // peers, taken from this one run (medians when --benchmark_repetitions is given);
 // --kutlog_ratios_from prints them from a run saved with --benchmark_out=FILE.json, and runs
@@ -26,6 +26,7 @@
 #include "inputs.hpp"
 #include "lobe_benchmarks.hpp"
 #include "kutlog/dispatch.hpp"
+#include "kutlog/sampling.hpp"
 #include "math_benchmarks.hpp"
 #include "ratio_report.hpp"
 
@@ -79,13 +80,14 @@ void register_scalar_benchmarks() {
   }
 }
 
-// Construction time of Lobe and PerLaneLobe over 200 random materials (n log-uniform in
-// [0.5, 10^6], k uniform in 1..64, Q uniform in [0.01, 0.99]; per-lane: n_min from the same
-// n, at least k, n_max = 4 n_min): median and worst, in microseconds.
+// Construction time of Lobe, PerLaneLobe and LobeSampler over 200 random materials (n
+// log-uniform in [0.5, 10^6], k uniform in 1..64, Q uniform in [0.01, 0.99]; per-lane: n_min
+// from the same n, at least k, n_max = 4 n_min; the sampler's use alternating): median and
+// worst, in microseconds.
 void print_setup_times(std::FILE* out) {
   std::mt19937 engine(12);
   std::uniform_real_distribution<double> unit(0, 1);
-  std::vector<double> lobe_us, per_lane_us;
+  std::vector<double> lobe_us, per_lane_us, sampler_us;
   for (int i = 0; i < 200; ++i) {
     const int k = 1 + int(unit(engine) * 64) % 64;
     const double n = std::exp(std::log(0.5) + unit(engine) * std::log(2e6));
@@ -99,8 +101,12 @@ void print_setup_times(std::FILE* out) {
     per_lane_us.push_back(time([&] {
       benchmark::DoNotOptimize(PerLaneLobe(std::max(n, double(k)), 4 * std::max(n, double(k)), k, Q));
     }));
+    sampler_us.push_back(time([&] {
+      benchmark::DoNotOptimize(LobeSampler(n, k, Q, i % 2 ? LobeUse::phong : LobeUse::microfacet));
+    }));
   }
-  for (auto [name, times] : {std::pair{"Lobe", &lobe_us}, std::pair{"PerLaneLobe", &per_lane_us}}) {
+  for (auto [name, times] : {std::pair{"Lobe", &lobe_us}, std::pair{"PerLaneLobe", &per_lane_us},
+                             std::pair{"LobeSampler", &sampler_us}}) {
     std::sort(times->begin(), times->end());
     std::fprintf(out, "setup %s over 200 random materials: median %.1f us, worst %.1f us\n", name,
                  (*times)[99] / 2 + (*times)[100] / 2, times->back());

@@ -13,7 +13,8 @@
 
 namespace kutlog::bench {
 
-// Registers the math benchmarks of `arch` (bench/arch_benchmarks.cpp, once per arch).
+// Registers the math (and sampling) benchmarks of `arch` (bench/arch_benchmarks.cpp, once per
+// arch).
 template <Arch arch>
 void register_math_benchmarks_of();
 

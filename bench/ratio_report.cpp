@@ -52,10 +52,11 @@ void RatioCollector::load_json(const std::string& path) {
 
 void RatioCollector::print_ratios(std::FILE* out) const {
   const bool math = print_math_ratios(out), lobes = print_lobe_ratios(out);
-  const bool shapes = print_call_shape_ratios(out);
-  if (!math && !lobes && !shapes)
+  const bool shapes = print_call_shape_ratios(out), sampling = print_sampling_ratios(out);
+  if (!math && !lobes && !shapes && !sampling)
     std::fputs("kutlog-bench: no ratios: the run has no kernel together with its peer "
-               "(math/<f>/kutlog_u10 with xsimd, or lobe/... with pow_xsimd at the same n)\n",
+               "(math/<f>/kutlog_u10 with xsimd, lobe/... with pow_xsimd at the same n, or "
+               "sample/sample_kutlog with sample_blinn_pow)\n",
                out);
 }
 
@@ -138,6 +139,25 @@ bool RatioCollector::print_call_shape_ratios(std::FILE* out) const {
                      whole / one, whole / sixteen, whole / span157, against_powf);
       }
   return printed;
+}
+
+bool RatioCollector::print_sampling_ratios(std::FILE* out) const {
+  // Throughput of the lobe sampler over that of pow-based Blinn sampling, same n and arch.
+  bool header = false;
+  for (const std::string& arch : compiled_arch_names()) {
+    const std::string tail = "/arch:" + arch;
+    const double blinn = rate("sample/sample_blinn_pow/n:1000" + tail);
+    if (blinn == 0) continue;
+    if (!header)
+      std::fprintf(out, "\n| sampling, n = 1000 | arch | sample_blinn_pow (M/s) | sample_kutlog / "
+                        "sample_blinn_pow at k = 1 / 3 / 5 |\n|---|---|---:|---|\n");
+    header = true;
+    std::fprintf(out, "| microfacet | %s | %.0f | %.2fx / %.2fx / %.2fx |\n", arch.c_str(),
+                 blinn / 1e6, rate("sample/sample_kutlog/n:1000/k:1" + tail) / blinn,
+                 rate("sample/sample_kutlog/n:1000/k:3" + tail) / blinn,
+                 rate("sample/sample_kutlog/n:1000/k:5" + tail) / blinn);
+  }
+  return header;
 }
 
 bool RatioCollector::print_math_ratios(std::FILE* out) const {

@@ -27,7 +27,8 @@ class RatioCollector : public benchmark::BenchmarkReporter {
   void load_json(const std::string& path);
   // Prints the ratio tables (markdown) of the kernels measured in this run: math kernels
   // against xsimd and std, lobes against pow_xsimd at the same n and arch, the per-fragment
-  // eval against powf and pow(double), spans against a 4096 array.
+  // eval against powf and pow(double), spans against a 4096 array, the lobe sampler against
+  // pow-based Blinn sampling.
   void print_ratios(std::FILE* out) const;
 
  private:
@@ -36,6 +37,7 @@ class RatioCollector : public benchmark::BenchmarkReporter {
   bool print_math_ratios(std::FILE* out) const;
   bool print_lobe_ratios(std::FILE* out) const;
   bool print_call_shape_ratios(std::FILE* out) const;
+  bool print_sampling_ratios(std::FILE* out) const;
 
   std::unique_ptr<benchmark::BenchmarkReporter> display_;
   std::map<std::string, double> throughput_;

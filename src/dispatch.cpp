@@ -14,6 +14,7 @@
 #include "kutlog/lobe.hpp"
 #include "kutlog/math.hpp"
 #include "kutlog/reference.hpp"
+#include "kutlog/sampling.hpp"
 #include "kutlog/shade.hpp"
 
 namespace kutlog {
@@ -228,6 +229,11 @@ void blinn_phong_u10(const float* t, float* out, std::size_t count, float n, flo
 void schlick(const float* t, float* out, std::size_t count, float n) {
   ref::validate_exponent(n);
   active_table().schlick(t, n, out, count);
+}
+
+void LobeSampler::sample(const float* u1, const float* u2, DirectionSamples out,
+                         std::size_t count) const {
+  active_table().sample_lobe(kernel_, u1, u2, out, count);
 }
 
 void shade(const Lobe& lobe, Vectors normal, Vectors to_light, Vectors to_viewer, float* out,

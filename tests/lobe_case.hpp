@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace kutlog {
 
@@ -29,6 +30,16 @@ inline std::string lobe_case_name(const testing::TestParamInfo<LobeCase>& info) 
   for (char& c : result)
     if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
   return result;
+}
+
+// The sampling tests' grid (issue 14): n in {k+1, 10, 100, 1000, 10^4}, k in {1, 3, 5},
+// Q in {0.1, 0.5, 0.9}.
+inline std::vector<LobeCase> sampling_grid() {
+  std::vector<LobeCase> grid;
+  for (int k : {1, 3, 5})
+    for (double Q : {0.1, 0.5, 0.9})
+      for (double n : {k + 1.0, 10.0, 100.0, 1000.0, 10000.0}) grid.push_back({n, k, Q});
+  return grid;
 }
 
 }  // namespace kutlog

@@ -61,6 +61,22 @@ inline constexpr LobeBound kLobeBounds[] = {
     {"per_lane", 0x1p-20, 0x1p-20, 0.0, 4.5},
 };
 
+// The lobe sampler (kutlog/sampling.hpp), on every arch, measured by tests/test_lobe_sampler.cpp
+// over dense u1 sweeps (2^14 evenly spaced, tiny ones, the 4096 floats below 1) on the grid n in
+// {k+1, 10, 100, 1000, 10^4}, k in {1, 3, 5}, Q in {0.1, 0.5, 0.9}, both uses, and on random
+// lobes (n log-uniform in [0.5, 10^6], k in 1..8, Q in [0.01, 0.99]):
+//   theta_error: |theta - inverse_cdf(u1)| / G, theta the angle of the returned direction from
+//     z, G the lobe's support. Absolute in units of G, not ULP: the density varies on the scale
+//     G, so an error of e G moves each sample by at most e of the lobe's width, what a
+//     chi-square test at any resolution of the lobe sees (and near theta = 0, where the ULP of
+//     theta shrinks, the density's own scale does not).
+//   pdf_error: |pdf - pdf_ref(direction)| / peak, pdf_ref the reference's solid-angle density
+//     of the returned direction, peak the pdf at theta = 0.
+struct SamplerBound {
+  double theta_error, pdf_error;
+};
+inline constexpr SamplerBound kSamplerBound = {0x1p-21, 0x1p-21};
+
 // The baselines of kutlog/lobe.hpp, which are not kutlog's kernels. Schlick's t / (n - n t + t)
 // rounds four times (three with FMA), each by half an ulp at most: within 4 ULP (the fuzz
 // target found 2.35 on SSE4.1 at n = 1e5; tests/test_lobe.cpp sees 2 at most on its grid).

@@ -8,6 +8,7 @@
 #include "arch/kernel_table.hpp"
 #include "kutlog/simd/lobe.hpp"
 #include "kutlog/simd/math.hpp"
+#include "kutlog/simd/sampling.hpp"
 #include "kutlog/simd/shade.hpp"
 #include "kutlog/simd/xsimd.hpp"
 
@@ -194,6 +195,31 @@ void shade_cosines_array(const LobeKernel& kernel, const ShadeOptions& options, 
                       {t, n_dot_l}, out, count, mask);
 }
 
+// The sampler over arrays: four outputs per pair of inputs, the tail as a partial batch.
+template <class Arch>
+void sample_lobe_array(const SamplerKernel& kernel, const float* u1, const float* u2,
+                       DirectionSamples out, std::size_t count) {
+  using F = floats_of<Arch>;
+  constexpr std::size_t N = F::size;
+  const simd::PreparedSampler<Arch> sampler(kernel);
+  std::size_t i = 0;
+  for (; i + N <= count; i += N) {
+    const simd::SampleBatch<Arch> sample = sampler(F::load_unaligned(u1 + i), F::load_unaligned(u2 + i));
+    sample.x.store_unaligned(out.x + i);
+    sample.y.store_unaligned(out.y + i);
+    sample.z.store_unaligned(out.z + i);
+    sample.pdf.store_unaligned(out.pdf + i);
+  }
+  if (i == count) return;
+  const std::size_t tail = count - i;
+  const simd::SampleBatch<Arch> sample = sampler(load_partial<Arch>(Arch{}, u1 + i, tail, 0.5f),
+                                                 load_partial<Arch>(Arch{}, u2 + i, tail, 0.5f));
+  store_partial<Arch>(Arch{}, out.x + i, sample.x, tail);
+  store_partial<Arch>(Arch{}, out.y + i, sample.y, tail);
+  store_partial<Arch>(Arch{}, out.z + i, sample.z, tail);
+  store_partial<Arch>(Arch{}, out.pdf + i, sample.pdf, tail);
+}
+
 template <class Arch>
 KernelTable make_kernel_table() {
   using F = xsimd::batch<float, Arch>;
@@ -241,6 +267,7 @@ KernelTable make_kernel_table() {
   table.shade_vectors = &shade_vectors_array<Arch>;
   table.shade_directions = &shade_directions_array<Arch>;
   table.shade_cosines = &shade_cosines_array<Arch>;
+  table.sample_lobe = &sample_lobe_array<Arch>;
   table.schlick = [](const float* t, float n, float* out, std::size_t count) {
     const F exponent(n);
     map_arrays<Arch, 1>([&](F v) { return simd::schlick(v, exponent); }, {t}, out, count);

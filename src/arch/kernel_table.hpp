@@ -5,6 +5,7 @@
 
 #include "kutlog/dispatch.hpp"
 #include "kutlog/lobe.hpp"
+#include "kutlog/sampling.hpp"
 #include "kutlog/shade.hpp"
 
 namespace kutlog::detail {
@@ -38,6 +39,9 @@ using ShadeCosinesKernel = void (*)(const LobeKernel&, const ShadeOptions&, cons
 using PerLaneArrayKernel = void (*)(const PerLaneKernel&, bool normalized, const float*,
                                     const float*, float*, std::size_t);
 
+using SampleArrayKernel = void (*)(const SamplerKernel&, const float* u1, const float* u2,
+                                   DirectionSamples, std::size_t);
+
 struct KernelTable {
   bool fused_fma;  // which of a Lobe's kernels this arch runs
   UnaryArrayKernel acos_u10, cos_u10, cos_halfpi_u10, exp_u10, log_u10;
@@ -50,6 +54,7 @@ struct KernelTable {
   ShadeVectorsKernel shade_vectors;
   ShadeDirectionsKernel shade_directions;
   ShadeCosinesKernel shade_cosines;
+  SampleArrayKernel sample_lobe;
 };
 
 // The table of one arch: specialized by src/arch/kernels.cpp, which CMake compiles once per

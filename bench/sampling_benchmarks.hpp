@@ -1,0 +1,78 @@
+// Benchmarks of lobe sampling at n = 1000, for one arch, named with the tokens the ratio report
+// reads: sample/<sampler>/n:1000[/k:<k>]/arch:<arch>, sampler in
+//   sample_kutlog:    kutlog::LobeSampler (microfacet) through its array API;
+//   sample_blinn_pow: Blinn-Phong half vectors as pbrt-v2 draws them, cos(theta) = u1^(1/(n+1))
+//                     with xsimd::pow, the azimuth's sin and cos with xsimd::sincos, and the pdf
+//                     (n+1)/(2 pi) cos^n = (n+1)/(2 pi) u1 / cos(theta) (no second pow).
+// Both write the same four arrays (x, y, z, pdf) from the same two of uniform numbers.
+// Instantiated by bench/arch_benchmarks.cpp, compiled with that arch's flags.
+#pragma once
+
+#include <benchmark/benchmark.h>
+
+#include <numbers>
+#include <string>
+
+#include "inputs.hpp"
+#include "kutlog/dispatch.hpp"
+#include "lobe_benchmarks.hpp"
+#include "kutlog/sampling.hpp"
+#include "kutlog/simd/xsimd.hpp"
+
+namespace kutlog::bench {
+
+inline constexpr int kSamplingExponent = 1000;
+
+// Runs `sample(u1, u2, out)` over kArrayLength pairs of uniform numbers.
+template <class Sample>
+void run_sampler(benchmark::State& state, const Sample& sample) {
+  BenchArrays arrays(uniform_inputs(0, 1, 3), uniform_inputs(0, 1, 4), 4);
+  const DirectionSamples out{arrays.out(0), arrays.out(1), arrays.out(2), arrays.out(3)};
+  for (auto _ : state) {
+    sample(arrays.x(), arrays.y(), out);
+    benchmark::DoNotOptimize(out.pdf);
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * std::int64_t(kArrayLength));
+}
+
+template <class SimdArch>
+void blinn_pow_sample_array(float n, const float* u1, const float* u2, DirectionSamples out) {
+  using F = xsimd::batch<float, SimdArch>;
+  const F inverse_exponent(1.0f / (n + 1)), pdf_scale(float((n + 1) / (2 * std::numbers::pi)));
+  const F two_pi(float(2 * std::numbers::pi));
+  for (std::size_t i = 0; i < kArrayLength; i += F::size) {
+    const F xi = F::load_aligned(u1 + i), cos_theta = xsimd::pow(xi, inverse_exponent);
+    const F sin_theta = xsimd::sqrt(xsimd::max(F(0.0f), F(1.0f) - cos_theta * cos_theta));
+    const auto [sin_phi, cos_phi] = xsimd::sincos(two_pi * F::load_aligned(u2 + i));
+    (sin_theta * cos_phi).store_aligned(out.x + i);
+    (sin_theta * sin_phi).store_aligned(out.y + i);
+    cos_theta.store_aligned(out.z + i);
+    (pdf_scale * xi / cos_theta).store_aligned(out.pdf + i);
+  }
+}
+
+template <class SimdArch>
+void register_sampling_benchmarks(Arch arch) {
+  const std::string at_n = "/n:" + std::to_string(kSamplingExponent);
+  const std::string tail = "/arch:" + std::string(arch_name(arch));
+  for (int k : {1, 3, 5})
+    benchmark::RegisterBenchmark(
+        ("sample/sample_kutlog" + at_n + "/k:" + std::to_string(k) + tail).c_str(),
+        [=](benchmark::State& state) {
+          const ScopedArch forced(arch);
+          const LobeSampler sampler(kSamplingExponent, k, kLobeAnchor, LobeUse::microfacet);
+          run_sampler(state, [&](const float* u1, const float* u2, DirectionSamples out) {
+            sampler.sample(u1, u2, out, kArrayLength);
+          });
+        });
+  benchmark::RegisterBenchmark(("sample/sample_blinn_pow" + at_n + tail).c_str(),
+                               [](benchmark::State& state) {
+                                 run_sampler(state, [](const float* u1, const float* u2,
+                                                       DirectionSamples out) {
+                                   blinn_pow_sample_array<SimdArch>(kSamplingExponent, u1, u2, out);
+                                 });
+                               });
+}
+
+}  // namespace kutlog::bench

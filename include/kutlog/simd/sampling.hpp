@@ -1,0 +1,176 @@
+// kutlog/simd/sampling.hpp: the F_kutlog lobe sampler of kutlog/sampling.hpp as a template on
+// xsimd batches of float, for users who inline it. The contract and the data rule are
+// kutlog/sampling.hpp's.
+#pragma once
+
+#include <cstdint>
+
+#include "kutlog/sampling.hpp"
+#include "kutlog/simd/lobe.hpp"
+#include "kutlog/simd/math.hpp"
+#include "kutlog/simd/xsimd.hpp"
+
+namespace kutlog::simd {
+
+template <class Arch>
+struct SampleBatch {
+  floats<Arch> x, y, z, pdf;
+};
+
+namespace detail {
+inline constexpr float kLargestBelowOne = 0x1.fffffep-1f;
+
+// sin and cos of r, |r| <= pi/4, by the polynomial cores of sin_u10 and cos_u10 without their
+// compensated last steps: a few float roundings (the sampler's bounds allow them, and they
+// halve its cost).
+template <class Arch>
+inline Pair<floats<Arch>> sin_cos_quarter_pi(floats<Arch> r) {
+  using F = floats<Arch>;
+  const F u = r * r;
+  return {mul_add(r * u, horner(u, constants::kSin), r),
+          mul_add(u * u, horner(u, constants::kCos), neg_mul_add(F(0.5f), u, F(1.0f)))};
+}
+
+// sin and cos of theta in [0, pi/2]: above pi/4 through rho = pi/2 - theta, formed exactly
+// (Sterbenz) but for the low part of pi/2.
+template <class Arch>
+inline Pair<floats<Arch>> sin_cos_halfpi(floats<Arch> theta) {
+  using F = floats<Arch>;
+  const auto upper = theta > F(0.78539819f);
+  const F rho = (F(constants::kHalfPiHi) - theta) + F(constants::kHalfPiLo);
+  const auto [sin_r, cos_r] = sin_cos_quarter_pi(xsimd::select(upper, rho, theta));
+  return {xsimd::select(upper, cos_r, sin_r), xsimd::select(upper, sin_r, cos_r)};
+}
+
+// sin and cos of the azimuth 2 pi u, u in [0, 1): 4u = q + f exactly, q an integer in 0..4,
+// |f| <= 1/2, so 2 pi u = q pi/2 + r, r = f pi/2.
+template <class Arch>
+inline Pair<floats<Arch>> sin_cos_turn(floats<Arch> u) {
+  using F = floats<Arch>;
+  const F four_u = u * F(4.0f), quadrant = xsimd::nearbyint(four_u);
+  const auto [sin_r, cos_r] = sin_cos_quarter_pi((four_u - quadrant) * F(constants::kHalfPiHi));
+  // Quadrant 1: (cos, sin) = (-sin r, cos r); 2: (-cos r, -sin r); 3: (sin r, -cos r); 4 = 0.
+  const auto odd = (quadrant == F(1.0f)) | (quadrant == F(3.0f));
+  const F negative_cos = xsimd::select((quadrant == F(1.0f)) | (quadrant == F(2.0f)), F(-0.0f),
+                                       F(0.0f));
+  const F negative_sin = xsimd::select((quadrant == F(2.0f)) | (quadrant == F(3.0f)), F(-0.0f),
+                                       F(0.0f));
+  return {xsimd::select(odd, cos_r, sin_r) ^ negative_sin,
+          xsimd::select(odd, sin_r, cos_r) ^ negative_cos};
+}
+
+// The cell of u1 in [0, 1) in the layout `cells` (kutlog/sampling.hpp's SamplerCells), and
+// u1's position x in it.
+template <class Arch>
+struct CellPosition {
+  ints<Arch> cell;
+  floats<Arch> x;
+  xsimd::batch_bool<float, Arch> lower;
+};
+template <SamplerCells cells, class Arch>
+inline CellPosition<Arch> locate(floats<Arch> u1) {
+  using F = floats<Arch>;
+  using I = ints<Arch>;
+  const auto lower = u1 <= F(0.5f);
+  // Lower cells: 2 L u1 = cell + 1/2 + x exactly.
+  const F scaled = u1 * F(2 * cells.lower_cells);
+  const F lower_cell = xsimd::min(xsimd::floor(scaled), F(cells.lower_cells - 1));
+  // Upper cells, by the bits of w = 1 - u1 (exact for u1 >= 1/2): the exponent field and the
+  // top band_bits of the mantissa give s = (e + 127) B + band, so that
+  // upper_cell(e, band) = L + (125 - (e + 127)) B + band; the mantissa's other bits, as a
+  // float in [1, 2), give 1.5 + x.
+  constexpr int kFractionBits = 23 - cells.band_bits;
+  const I bits = xsimd::bitwise_cast<I>(F(1.0f) - u1);
+  const I s = bits >> kFractionBits;
+  const I upper_cell =
+      I(cells.lower_cells + 125 * cells.bands()) - s + ((s & I(cells.bands() - 1)) << 1);
+  const I fraction = (bits & I((1 << kFractionBits) - 1)) << cells.band_bits;
+  const F upper_x = xsimd::bitwise_cast<F>(fraction | I(0x3f800000)) - F(1.5f);
+  return {xsimd::select(xsimd::bool_cast(lower), xsimd::to_int(lower_cell), upper_cell),
+          xsimd::select(lower, (scaled - lower_cell) - F(0.5f), upper_x), lower};
+}
+
+// Horner's rule over coefficient rows (row j at coefficients + j * stride), each lane's
+// coefficients looked up by its cell with `lookup(row, cell)`.
+template <class Arch, class Lookup>
+inline floats<Arch> cell_polynomial(const float* coefficients, int degree, int stride,
+                                    const CellPosition<Arch>& at, Lookup lookup) {
+  const float* row = coefficients + degree * stride;
+  floats<Arch> p = lookup(row, at.cell);
+  for (int j = degree; j-- > 0;) {
+    row -= stride;
+    p = mul_add(p, at.x, lookup(row, at.cell));
+  }
+  return p;
+}
+
+// u in [0, 1): below 0 (and NaN) to 0, from 1 up to the largest float below 1.
+template <class Arch>
+inline floats<Arch> unit_interval(floats<Arch> u) {
+  using F = floats<Arch>;
+  return xsimd::select(u > F(0.0f), xsimd::min(u, F(kLargestBelowOne)), F(0.0f));
+}
+}  // namespace detail
+
+// A SamplerKernel with its constants broadcast once, for loops over many batches.
+template <class Arch>
+class PreparedSampler {
+ public:
+  using F = floats<Arch>;
+  using I = ints<Arch>;
+
+  explicit PreparedSampler(const SamplerKernel& kernel)
+      : kernel_(kernel), half_c_(0.5f * kernel.c), limit_(kernel.limit),
+        peak_(kernel.density_scale) {}
+
+  // The polar angle theta(u1) of the fitted inverse CDF, in [0, limit]; u1 in [0, 1).
+  // AVX-512 looks the coarse table up with permutes (a gather of 16 lanes costs about 16
+  // loads, a two-register permute one instruction); the other archs gather from the fine one.
+  F polar_angle(F u1) const {
+    using K = SamplerKernel;
+    F p;
+    xsimd::batch_bool<float, Arch> lower;
+#if XSIMD_WITH_AVX512F
+    if constexpr (arch_of<Arch, xsimd::avx512f>) {
+      const detail::CellPosition<Arch> at = detail::locate<K::kCoarse>(u1);
+      p = detail::cell_polynomial(kernel_.coarse.data(), kernel_.coarse_degree, K::kCoarseStride,
+                                  at, [](const float* row, I cell) -> F {
+                                    return _mm512_permutex2var_ps(_mm512_loadu_ps(row), cell,
+                                                                  _mm512_loadu_ps(row + 16));
+                                  });
+      lower = at.lower;
+    } else
+#endif
+    {
+      const detail::CellPosition<Arch> at = detail::locate<K::kFine>(u1);
+      p = detail::cell_polynomial(kernel_.fine.data(), kernel_.fine_degree, K::kFine.count(), at,
+                                  [](const float* row, I cell) { return F::gather(row, cell); });
+      lower = at.lower;
+    }
+    const F theta = xsimd::select(lower, xsimd::sqrt(u1) * p, p);
+    return xsimd::min(xsimd::max(theta, F(0.0f)), limit_);
+  }
+
+  SampleBatch<Arch> operator()(F u1, F u2) const {
+    const F theta = polar_angle(detail::unit_interval(u1));
+    const auto [sin_theta, cos_theta] = detail::sin_cos_halfpi(theta);
+    const auto [sin_phi, cos_phi] = detail::sin_cos_turn(detail::unit_interval(u2));
+    // F = cos^k(c theta), cos(c theta) = 1 - 2 sin^2(c theta / 2), c theta in [0, pi/2].
+    const F half_angle = half_c_ * theta;
+    const F sin_half = detail::sin_cos_quarter_pi(half_angle).hi;
+    const F lobe = detail::integer_power(neg_mul_add(F(2.0f) * sin_half, sin_half, F(1.0f)),
+                                         kernel_.k);
+    const F density = kernel_.cosine_weighted ? peak_ * lobe * cos_theta : peak_ * lobe;
+    const auto valid = (u1 == u1) & (u2 == u2);
+    const F nan(std::numeric_limits<float>::quiet_NaN());
+    return {xsimd::select(valid, sin_theta * cos_phi, nan),
+            xsimd::select(valid, sin_theta * sin_phi, nan), xsimd::select(valid, cos_theta, nan),
+            xsimd::select(valid, detail::clamp_zero_to(density, peak_), nan)};
+  }
+
+ private:
+  const SamplerKernel& kernel_;
+  F half_c_, limit_, peak_;
+};
+
+}  // namespace kutlog::simd
