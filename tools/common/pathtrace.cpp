@@ -33,11 +33,11 @@ struct Frame {
 };
 
 // The sky: the sun up and to the left, in front of the sphere, so that its highlight faces
-// the camera. Its angular radius, 0.15 rad, is twice the width of the n = 1000 lobe's
-// reflected directions: a narrower disc leaves most of its highlight where the lobe overlaps it
-// in part, where BRDF sampling, whichever, is a coin toss between 0 and the disc (light
-// sampling's case); this one leaves a highlight that lobe sampling resolves and uniform
-// sampling finds once in a few hundred draws. Its radiance makes it about four fifths of the
+// the camera. Its angular radius, 0.15 rad, is twice the angle (0.074 rad) at which the
+// n = 1000 lobe's reflected directions fall to half: a narrower disc leaves most of its
+// highlight where the lobe overlaps it in part, where BRDF sampling, whichever, is a coin toss
+// between 0 and the disc (light sampling's case); this one leaves a highlight that lobe
+// sampling resolves and uniform sampling finds once in 89 draws at best. Its radiance makes it about four fifths of the
 // light that reaches a surface facing it, as a clear day's sun is.
 const Vec3 kToSun = unit({-0.45, 0.55, 0.7});
 const double kSunCosRadius = std::cos(0.15);
