@@ -1,6 +1,7 @@
 // kutlog-pathtrace's estimators (tools/common/pathtrace): both are unbiased (the white furnace
 // against the quadrature albedo of kutlog/reference.hpp), lobe sampling beats uniform sampling
-// and converges as 1 / sqrt(spp), and the images do not depend on the number of threads.
+// and converges as 1 / sqrt(spp), a narrow lobe reflects what the mirror direction sees, and
+// the images do not depend on the number of threads.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -54,6 +55,33 @@ TEST(PathtraceWhiteFurnace, EachSamplerAveragesToTheAlbedo) {
           << standard_error;
     }
   }
+}
+
+// A lobe this narrow is nearly a mirror: about a tilted normal, the light reflected towards the
+// mirror image of the zenith is the sky's zenith radiance times the albedo, to within the
+// gradient's change over the lobe (below 1 % within 0.18 rad of the zenith; measured 0.4 %).
+// A shading frame that turned the sampled directions the wrong way would see the ground, the
+// horizon or the sun.
+TEST(PathtraceMirror, NarrowLobeReflectsTheSkyFromTheMirrorDirection) {
+  const ref::KutlogMicrofacet brdf(kN, kK, kQ);
+  const Environment sky = Environment::sky();
+  const Vec3 normal = unit({0.4, 0.7, 0.3}), zenith{0, 1, 0};
+  const double cos_o = ref::dot(normal, zenith);
+  const Vec3 wo{2 * cos_o * normal.x - zenith.x, 2 * cos_o * normal.y - zenith.y,
+                2 * cos_o * normal.z - zenith.z};
+  std::mt19937_64 random(3);
+  std::uniform_real_distribution<double> uniform(0, 1);
+  constexpr int kCount = 20'000;
+  Rgb sum;
+  for (int i = 0; i < kCount; ++i) {
+    const double u1 = uniform(random), u2 = uniform(random);
+    sum += estimate_reflected(brdf, Sampler::lobe, sky, normal, wo, u1, u2);
+  }
+  const double albedo = ref::albedo_blinn(brdf.lobe(), brdf.lobe().coef_exact(), std::acos(cos_o));
+  const Rgb expected = albedo * sky.radiance(zenith), mean = (1.0 / kCount) * sum;
+  EXPECT_NEAR(mean.r, expected.r, 0.01 * expected.r);
+  EXPECT_NEAR(mean.g, expected.g, 0.01 * expected.g);
+  EXPECT_NEAR(mean.b, expected.b, 0.01 * expected.b);
 }
 
 // A small image of the sky scene: the RMSE against a reference of 2048 spp (lobe sampling, its
