@@ -146,6 +146,7 @@ TEST(PathtraceRender, BadArgumentsAreRejected) {
   EXPECT_THROW(render({brdf, sky, 8, 8}, Sampler::lobe, 1, {}, 1), std::invalid_argument);
   EXPECT_THROW(render({brdf, sky, 8, 8}, Sampler::lobe, 1, {4, 2}, 1), std::invalid_argument);
   EXPECT_THROW(render({brdf, sky, 8, 8}, Sampler::lobe, 1, {0, 2}, 1), std::invalid_argument);
+  EXPECT_THROW(render({brdf, sky, 8, 8}, Sampler::lobe, 1, {2, 2}, 1), std::invalid_argument);
   EXPECT_THROW(render({brdf, sky, 8, 8}, Sampler::lobe, 1, {1}, 0), std::invalid_argument);
   EXPECT_THROW(rmse(Image(8, 8), Image(8, 9)), std::invalid_argument);
 }

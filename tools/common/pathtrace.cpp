@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -126,7 +127,8 @@ std::vector<Image> render(const Scene& scene, Sampler sampler, std::uint64_t see
   if (scene.width < 1 || scene.height < 1)
     throw std::invalid_argument("image size: width and height must be >= 1");
   if (spp_checkpoints.empty() || spp_checkpoints.front() < 1 ||
-      !std::is_sorted(spp_checkpoints.begin(), spp_checkpoints.end()))
+      std::adjacent_find(spp_checkpoints.begin(), spp_checkpoints.end(), std::greater_equal<>()) !=
+          spp_checkpoints.end())
     throw std::invalid_argument("samples per pixel: checkpoints must be >= 1 and increasing");
   if (threads < 1) throw std::invalid_argument("threads: must be >= 1");
   std::vector<Image> images(spp_checkpoints.size(), Image(scene.width, scene.height));

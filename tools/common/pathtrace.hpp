@@ -90,10 +90,11 @@ struct Scene {
 
 // Renders the scene with `sampler`, one camera ray through each pixel's centre (so that the
 // images differ only by the sampling of reflected light) and spp_checkpoints.back() samples per
-// pixel; returns the running mean at each number of samples in spp_checkpoints (increasing,
-// >= 1). Pixels draw from their own random streams, seeded by (seed, pixel): the images do
-// not depend on `threads` (rows are shared out among that many std::threads).
-// std::invalid_argument for a size below 1, empty or unordered checkpoints, threads < 1.
+// pixel; returns the running mean at each number of samples in spp_checkpoints (strictly
+// increasing, >= 1). Pixels draw from their own random streams, seeded by (seed, pixel): the
+// images do not depend on `threads` (rows are shared out among that many std::threads).
+// std::invalid_argument for a size below 1, empty or not strictly increasing checkpoints,
+// threads < 1.
 std::vector<Image> render(const Scene& scene, Sampler sampler, std::uint64_t seed,
                           const std::vector<int>& spp_checkpoints, int threads);
 
