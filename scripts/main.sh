@@ -47,7 +47,8 @@ draw albedo albedo
 "$tools/kutlog-render" --object teapot --n 100 --k 3 --output "$out/teapot"
 
 section "kutlog-pathtrace: lobe against uniform sampling, RMSE against a 4096-spp reference"
-# About 70 s of CPU (35 s on 2 idle cores): the reference is most of it.
+# About 80 s of CPU (40 s on 2 idle cores; 2 min 47 s measured on 2 cores shared at load 8):
+# the 4096-spp reference is most of it.
 "$tools/kutlog-pathtrace" --output "$out/pathtrace" --format csv >"$out/pathtrace-rmse.csv"
 draw rmse pathtrace-rmse
 
