@@ -38,8 +38,8 @@ struct Frame {
 // n = 1000 lobe's reflected directions fall to half: a narrower disc leaves most of its
 // highlight where the lobe overlaps it in part, where BRDF sampling, whichever, is a coin toss
 // between 0 and the disc (light sampling's case); this one leaves a highlight that lobe
-// sampling resolves and uniform sampling finds once in 89 draws at best. Its radiance makes it about four fifths of the
-// light that reaches a surface facing it, as a clear day's sun is.
+// sampling resolves and uniform sampling finds once in 89 draws at best. Its radiance makes
+// it about four fifths of the light that reaches a surface facing it, as a clear day's sun is.
 const Vec3 kToSun = unit({-0.45, 0.55, 0.7});
 const double kSunCosRadius = std::cos(0.15);
 constexpr Rgb kSun{100, 94, 80};
