@@ -8,12 +8,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "common/cli.hpp"
+#include "common/label_font.hpp"
 #include "kutlog/lobe.hpp"
 #include "kutlog/reference.hpp"
 #include "kutlog/shade.hpp"
@@ -83,16 +83,6 @@ struct MeshView {
   }
 };
 
-// The panel labels' font, as a full path: OIIO 2.4 opens it directly instead of searching its
-// font directories. std::runtime_error naming the Debian package if it is missing.
-const char* label_font() {
-  static constexpr const char* kPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
-  if (!std::filesystem::exists(kPath))
-    throw std::runtime_error(std::string("font ") + kPath +
-                             " is missing (Debian package fonts-dejavu-core)");
-  return kPath;
-}
-
 // Radiance of a grey dielectric-ish material under a white light of irradiance 1:
 // diffuse 0.5/pi N.L plus the specular term (already times N.L) scaled by `specular_scale`.
 float radiance(float n_dot_l, float specular, float specular_scale) {
@@ -126,7 +116,7 @@ int main(int argc, char** argv) {
     const int rows = object == "teapot" ? size * 5 / 8 : size;
     const std::optional<MeshView> teapot =
         object == "teapot" ? std::optional<MeshView>(std::in_place, size, rows) : std::nullopt;
-    const char* font = label_font();
+    const char* font = kutlog::tools::label_font();
     constexpr int kPanels = 4, kLabelHeight = 40;
     const char* labels[kPanels] = {"Blinn-Phong cos^n", "F_kutlog", "coef * F_kutlog (0.04)", "Schlick"};
     const int width = kPanels * size, height = rows + kLabelHeight;

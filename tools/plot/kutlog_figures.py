@@ -10,6 +10,8 @@ Figures and the tables they read:
   9        kutlog-curves --figure 9: energy error of the fitted and of the exact coef against n
   albedo   kutlog-curves --figure albedo: white furnace, directional albedo against incidence
   ulp      kutlog-ulp --function F --profile: max ULP error per input bucket, per arch
+  rmse     kutlog-pathtrace: RMSE against a high-spp reference against spp, lobe and uniform
+           sampling
 
 Needs only the standard library and matplotlib (Debian: python3-matplotlib, for /usr/bin/python3).
 """
@@ -191,6 +193,28 @@ def ulp_errors(rows):
     return figure
 
 
+def sampling_errors(rows):
+    figure, axes = new_axes()
+    spp = column(rows, "spp")
+    lobe = column(rows, "rmse_lobe")
+    axes.plot(spp, lobe, marker="o", label=r"importance sampling the $F_\mathrm{kutlog}$ lobe")
+    axes.plot(spp, column(rows, "rmse_uniform"), marker="s",
+              label=r"uniform hemisphere sampling (pdf $1/2\pi$)")
+    # Monte Carlo's rate, through the lobe's first point: an unbiased estimate of finite
+    # variance follows it.
+    axes.plot(spp, [lobe[0] * (spp[0] / s) ** 0.5 for s in spp], color="0.5", linestyle="--",
+              linewidth=1, label=r"$\propto 1/\sqrt{\mathrm{spp}}$")
+    axes.set_xscale("log", base=2)
+    axes.set_yscale("log")
+    log_grid(axes, "y")
+    axes.set_xticks(spp, [f"{s:g}" for s in spp])
+    axes.set(title=f"Glossy sphere under a sky: RMSE against a {rows[0]['reference_spp']:g}-spp "
+                   f"reference ({parameters(rows, 'n', 'k', 'Q')})",
+             xlabel="samples per pixel", ylabel="RMSE (radiance)")
+    axes.legend(loc="best")
+    return figure
+
+
 FIGURES = {
     "2": lambda rows: lobes(rows, "Figure 2: the lobes"),
     "lobe": lambda rows: lobes(rows, "The lobes"),
@@ -198,6 +222,7 @@ FIGURES = {
     "9": energy_errors,
     "albedo": albedo,
     "ulp": ulp_errors,
+    "rmse": sampling_errors,
 }
 
 
