@@ -47,26 +47,11 @@ using vector_t = typename vector<T>::type;
 
 // The signed integer as wide as T: a comparison's lanes are 0 or -1 of this type, and the
 // bitwise operations on float lanes go through it.
-template <std::size_t bytes>
-struct signed_of_size;
-template <>
-struct signed_of_size<1> {
-  using type = std::int8_t;
-};
-template <>
-struct signed_of_size<2> {
-  using type = std::int16_t;
-};
-template <>
-struct signed_of_size<4> {
-  using type = std::int32_t;
-};
-template <>
-struct signed_of_size<8> {
-  using type = std::int64_t;
-};
 template <class T>
-using lane_int = typename signed_of_size<sizeof(T)>::type;
+using lane_int = std::conditional_t<
+    sizeof(T) == 1, std::int8_t,
+    std::conditional_t<sizeof(T) == 2, std::int16_t,
+                       std::conditional_t<sizeof(T) == 4, std::int32_t, std::int64_t>>>;
 template <class T>
 using mask_t = vector_t<lane_int<T>>;
 
@@ -305,26 +290,17 @@ inline batch<To, A> bitwise_cast(batch<T, A> const& self, batch<To, A> const&,
   return (kutlog_portable::vector_t<To>)self.data;
 }
 // A float lane's mask is an int32 lane's, a double's an int64's: the same register.
-template <class A>
-inline batch_bool<float, A> bool_cast(batch_bool<int32_t, A> const& self,
-                                      requires_arch<KUTLOG_PORTABLE>) noexcept {
-  return self.data;
-}
-template <class A>
-inline batch_bool<int32_t, A> bool_cast(batch_bool<float, A> const& self,
-                                        requires_arch<KUTLOG_PORTABLE>) noexcept {
-  return self.data;
-}
-template <class A>
-inline batch_bool<double, A> bool_cast(batch_bool<int64_t, A> const& self,
-                                       requires_arch<KUTLOG_PORTABLE>) noexcept {
-  return self.data;
-}
-template <class A>
-inline batch_bool<int64_t, A> bool_cast(batch_bool<double, A> const& self,
-                                        requires_arch<KUTLOG_PORTABLE>) noexcept {
-  return self.data;
-}
+#define KUTLOG_PORTABLE_BOOL_CAST(From, To)                                           \
+  template <class A>                                                                 \
+  inline batch_bool<To, A> bool_cast(batch_bool<From, A> const& self,                \
+                                     requires_arch<KUTLOG_PORTABLE>) noexcept {      \
+    return self.data;                                                                \
+  }
+KUTLOG_PORTABLE_BOOL_CAST(int32_t, float)
+KUTLOG_PORTABLE_BOOL_CAST(float, int32_t)
+KUTLOG_PORTABLE_BOOL_CAST(int64_t, double)
+KUTLOG_PORTABLE_BOOL_CAST(double, int64_t)
+#undef KUTLOG_PORTABLE_BOOL_CAST
 
 // ---- comparisons and selection -------------------------------------------------------------
 // The compiler's comparison gives a vector of the signed integer as wide as T (long or long
@@ -390,49 +366,53 @@ inline bool any(batch_bool<T, A> const& self, requires_arch<KUTLOG_PORTABLE>) no
 // ---- what kutlog does not call but xsimd's API names -----------------------------------------
 // xsimd_api.hpp calls these by qualified name, so they must exist where xsimd itself has no arch
 // to declare them; written lane by lane.
+namespace kutlog_portable {
+// self + other (or self - other), integers clamped to T's range where it overflows.
+template <bool kSubtract, class A, class T>
+inline batch<T, A> saturated(batch<T, A> const& self, batch<T, A> const& other) noexcept {
+  if constexpr (std::is_floating_point_v<T>) {
+    return kSubtract ? self.data - other.data : self.data + other.data;
+  } else {
+    vector_t<T> v;
+    for (std::size_t i = 0; i < batch<T, A>::size; ++i) {
+      const bool overflows = kSubtract ? __builtin_sub_overflow(self.data[i], other.data[i], &v[i])
+                                       : __builtin_add_overflow(self.data[i], other.data[i], &v[i]);
+      if (overflows)
+        v[i] = (other.data[i] > 0) != kSubtract ? std::numeric_limits<T>::max()
+                                                : std::numeric_limits<T>::min();
+    }
+    return v;
+  }
+}
+// The lanes of self and other interleaved, from lane `first` on (0: the low halves).
+template <class A, class T>
+inline batch<T, A> zipped(batch<T, A> const& self, batch<T, A> const& other,
+                          std::size_t first) noexcept {
+  vector_t<T> v;
+  for (std::size_t i = 0; i < batch<T, A>::size / 2; ++i)
+    v[2 * i] = self.data[first + i], v[2 * i + 1] = other.data[first + i];
+  return v;
+}
+}  // namespace kutlog_portable
 template <class A, class T>
 inline batch<T, A> sadd(batch<T, A> const& self, batch<T, A> const& other,
                         requires_arch<KUTLOG_PORTABLE>) noexcept {
-  if constexpr (std::is_floating_point_v<T>) {
-    return self.data + other.data;
-  } else {
-    kutlog_portable::vector_t<T> v;
-    for (std::size_t i = 0; i < batch<T, A>::size; ++i)
-      if (__builtin_add_overflow(self.data[i], other.data[i], &v[i]))
-        v[i] = other.data[i] > 0 ? std::numeric_limits<T>::max() : std::numeric_limits<T>::min();
-    return v;
-  }
+  return kutlog_portable::saturated<false>(self, other);
 }
 template <class A, class T>
 inline batch<T, A> ssub(batch<T, A> const& self, batch<T, A> const& other,
                         requires_arch<KUTLOG_PORTABLE>) noexcept {
-  if constexpr (std::is_floating_point_v<T>) {
-    return self.data - other.data;
-  } else {
-    kutlog_portable::vector_t<T> v;
-    for (std::size_t i = 0; i < batch<T, A>::size; ++i)
-      if (__builtin_sub_overflow(self.data[i], other.data[i], &v[i]))
-        v[i] = other.data[i] > 0 ? std::numeric_limits<T>::min() : std::numeric_limits<T>::max();
-    return v;
-  }
+  return kutlog_portable::saturated<true>(self, other);
 }
-// The lanes of self and other interleaved, from the low halves or from the high halves.
 template <class A, class T>
 inline batch<T, A> zip_lo(batch<T, A> const& self, batch<T, A> const& other,
                           requires_arch<KUTLOG_PORTABLE>) noexcept {
-  kutlog_portable::vector_t<T> v;
-  for (std::size_t i = 0; i < batch<T, A>::size / 2; ++i)
-    v[2 * i] = self.data[i], v[2 * i + 1] = other.data[i];
-  return v;
+  return kutlog_portable::zipped(self, other, 0);
 }
 template <class A, class T>
 inline batch<T, A> zip_hi(batch<T, A> const& self, batch<T, A> const& other,
                           requires_arch<KUTLOG_PORTABLE>) noexcept {
-  constexpr std::size_t half = batch<T, A>::size / 2;
-  kutlog_portable::vector_t<T> v;
-  for (std::size_t i = 0; i < half; ++i)
-    v[2 * i] = self.data[half + i], v[2 * i + 1] = other.data[half + i];
-  return v;
+  return kutlog_portable::zipped(self, other, batch<T, A>::size / 2);
 }
 // Lane i: the sum of row[i]'s lanes.
 template <class A, class T>
@@ -446,28 +426,16 @@ inline batch<T, A> haddp(batch<T, A> const* row, requires_arch<KUTLOG_PORTABLE>)
 }
 
 // ---- conversions between integer and floating lanes of one width ----------------------------
-// What C++'s conversions do, lane by lane (float to integer truncates, like cvttps2dq; out of
-// range it is undefined, and xsimd calls it only in range).
+// int32 <-> float and int64 <-> double: what C++'s conversions do, lane by lane (float to
+// integer truncates, like cvttps2dq; out of range it is undefined, and xsimd calls it only in
+// range).
 namespace detail {
-template <class A>
-inline batch<float, A> fast_cast(batch<int32_t, A> const& self, batch<float, A> const&,
-                                 requires_arch<KUTLOG_PORTABLE>) noexcept {
-  return __builtin_convertvector(self.data, kutlog_portable::vector_t<float>);
-}
-template <class A>
-inline batch<int32_t, A> fast_cast(batch<float, A> const& self, batch<int32_t, A> const&,
-                                   requires_arch<KUTLOG_PORTABLE>) noexcept {
-  return __builtin_convertvector(self.data, kutlog_portable::vector_t<int32_t>);
-}
-template <class A>
-inline batch<double, A> fast_cast(batch<int64_t, A> const& self, batch<double, A> const&,
-                                  requires_arch<KUTLOG_PORTABLE>) noexcept {
-  return __builtin_convertvector(self.data, kutlog_portable::vector_t<double>);
-}
-template <class A>
-inline batch<int64_t, A> fast_cast(batch<double, A> const& self, batch<int64_t, A> const&,
-                                   requires_arch<KUTLOG_PORTABLE>) noexcept {
-  return __builtin_convertvector(self.data, kutlog_portable::vector_t<int64_t>);
+template <class A, class From, class To>
+  requires(sizeof(From) == sizeof(To) && std::is_floating_point_v<From> != std::is_floating_point_v<To> &&
+           std::is_signed_v<From> && std::is_signed_v<To>)
+inline batch<To, A> fast_cast(batch<From, A> const& self, batch<To, A> const&,
+                              requires_arch<KUTLOG_PORTABLE>) noexcept {
+  return __builtin_convertvector(self.data, kutlog_portable::vector_t<To>);
 }
 }  // namespace detail
 
