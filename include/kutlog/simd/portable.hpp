@@ -109,23 +109,21 @@ using kutlog::simd::portable_detail::mask_t;
 using kutlog::simd::portable_detail::vector_t;
 }  // namespace kutlog_portable
 
-#define KUTLOG_PORTABLE kutlog::simd::portable
-
 // ---- memory --------------------------------------------------------------------------------
 template <class A, class T>
-inline batch<T, A> broadcast(T value, requires_arch<KUTLOG_PORTABLE>) noexcept {
+inline batch<T, A> broadcast(T value, requires_arch<kutlog_portable::portable>) noexcept {
   kutlog_portable::vector_t<T> v;
   for (std::size_t i = 0; i < batch<T, A>::size; ++i) v[i] = value;
   return v;
 }
 template <class A, class T, class... Values>
-inline batch<T, A> set(batch<T, A> const&, requires_arch<KUTLOG_PORTABLE>,
+inline batch<T, A> set(batch<T, A> const&, requires_arch<kutlog_portable::portable>,
                        Values... values) noexcept {
   static_assert(sizeof...(Values) == batch<T, A>::size, "one value per lane");
   return kutlog_portable::vector_t<T>{static_cast<T>(values)...};
 }
 template <class A, class T, class... Values>
-inline batch_bool<T, A> set(batch_bool<T, A> const&, requires_arch<KUTLOG_PORTABLE>,
+inline batch_bool<T, A> set(batch_bool<T, A> const&, requires_arch<kutlog_portable::portable>,
                             Values... values) noexcept {
   static_assert(sizeof...(Values) == batch<T, A>::size, "one value per lane");
   using Lane = kutlog::simd::portable_detail::lane_int<T>;
@@ -133,167 +131,167 @@ inline batch_bool<T, A> set(batch_bool<T, A> const&, requires_arch<KUTLOG_PORTAB
 }
 template <class A, class T>
 inline batch<T, A> load_unaligned(T const* memory, convert<T>,
-                                  requires_arch<KUTLOG_PORTABLE>) noexcept {
+                                  requires_arch<kutlog_portable::portable>) noexcept {
   kutlog_portable::vector_t<T> v;
   std::memcpy(&v, memory, sizeof v);
   return v;
 }
 template <class A, class T>
 inline batch<T, A> load_aligned(T const* memory, convert<T>,
-                                requires_arch<KUTLOG_PORTABLE>) noexcept {
+                                requires_arch<kutlog_portable::portable>) noexcept {
   return load_unaligned<A>(memory, convert<T>{}, A{});
 }
 template <class A, class T>
 inline void store_unaligned(T* memory, batch<T, A> const& self,
-                            requires_arch<KUTLOG_PORTABLE>) noexcept {
+                            requires_arch<kutlog_portable::portable>) noexcept {
   std::memcpy(memory, &self.data, sizeof self.data);
 }
 template <class A, class T>
 inline void store_aligned(T* memory, batch<T, A> const& self,
-                          requires_arch<KUTLOG_PORTABLE>) noexcept {
+                          requires_arch<kutlog_portable::portable>) noexcept {
   store_unaligned<A>(memory, self, A{});
 }
 template <class A, class T>
 inline void store(batch_bool<T, A> const& self, bool* memory,
-                  requires_arch<KUTLOG_PORTABLE>) noexcept {
+                  requires_arch<kutlog_portable::portable>) noexcept {
   for (std::size_t i = 0; i < batch<T, A>::size; ++i) memory[i] = self.data[i] != 0;
 }
 
 // ---- arithmetic ----------------------------------------------------------------------------
 template <class A, class T>
 inline batch<T, A> add(batch<T, A> const& self, batch<T, A> const& other,
-                       requires_arch<KUTLOG_PORTABLE>) noexcept {
+                       requires_arch<kutlog_portable::portable>) noexcept {
   return self.data + other.data;
 }
 template <class A, class T>
 inline batch<T, A> sub(batch<T, A> const& self, batch<T, A> const& other,
-                       requires_arch<KUTLOG_PORTABLE>) noexcept {
+                       requires_arch<kutlog_portable::portable>) noexcept {
   return self.data - other.data;
 }
 template <class A, class T>
 inline batch<T, A> mul(batch<T, A> const& self, batch<T, A> const& other,
-                       requires_arch<KUTLOG_PORTABLE>) noexcept {
+                       requires_arch<kutlog_portable::portable>) noexcept {
   return self.data * other.data;
 }
 template <class A, class T>
 inline batch<T, A> div(batch<T, A> const& self, batch<T, A> const& other,
-                       requires_arch<KUTLOG_PORTABLE>) noexcept {
+                       requires_arch<kutlog_portable::portable>) noexcept {
   return self.data / other.data;
 }
 template <class A, class T>
-inline batch<T, A> neg(batch<T, A> const& self, requires_arch<KUTLOG_PORTABLE>) noexcept {
+inline batch<T, A> neg(batch<T, A> const& self, requires_arch<kutlog_portable::portable>) noexcept {
   return -self.data;
 }
 template <class A, class T, class = std::enable_if_t<std::is_floating_point_v<T>>>
-inline batch<T, A> abs(batch<T, A> const& self, requires_arch<KUTLOG_PORTABLE>) noexcept {
+inline batch<T, A> abs(batch<T, A> const& self, requires_arch<kutlog_portable::portable>) noexcept {
   return kutlog_portable::each_lane<T>(self.data, [](T x) { return std::fabs(x); });
 }
 template <class A, class T>
-inline batch<T, A> sqrt(batch<T, A> const& self, requires_arch<KUTLOG_PORTABLE>) noexcept {
+inline batch<T, A> sqrt(batch<T, A> const& self, requires_arch<kutlog_portable::portable>) noexcept {
   return kutlog_portable::each_lane<T>(self.data, [](T x) { return std::sqrt(x); });
 }
 // Exact (one division), where SIMD archs give a 12-bit estimate: the kernels refine it anyway.
 template <class A, class T>
-inline batch<T, A> reciprocal(batch<T, A> const& self, requires_arch<KUTLOG_PORTABLE>) noexcept {
+inline batch<T, A> reciprocal(batch<T, A> const& self, requires_arch<kutlog_portable::portable>) noexcept {
   return T(1) / self.data;
 }
 template <class A, class T>
-inline batch<T, A> rsqrt(batch<T, A> const& self, requires_arch<KUTLOG_PORTABLE>) noexcept {
+inline batch<T, A> rsqrt(batch<T, A> const& self, requires_arch<kutlog_portable::portable>) noexcept {
   return T(1) / sqrt<A>(self, A{}).data;
 }
 // In the current rounding mode, which kutlog's contracts require to be to-nearest.
 template <class A, class T>
-inline batch<T, A> nearbyint(batch<T, A> const& self, requires_arch<KUTLOG_PORTABLE>) noexcept {
+inline batch<T, A> nearbyint(batch<T, A> const& self, requires_arch<kutlog_portable::portable>) noexcept {
   return kutlog_portable::each_lane<T>(self.data, [](T x) { return std::nearbyint(x); });
 }
 
 // ---- bitwise -------------------------------------------------------------------------------
 template <class A, class T>
 inline batch<T, A> bitwise_and(batch<T, A> const& self, batch<T, A> const& other,
-                               requires_arch<KUTLOG_PORTABLE>) noexcept {
+                               requires_arch<kutlog_portable::portable>) noexcept {
   return kutlog_portable::from_bits<T>(kutlog_portable::bits<T>(self.data) &
                                        kutlog_portable::bits<T>(other.data));
 }
 template <class A, class T>
 inline batch<T, A> bitwise_or(batch<T, A> const& self, batch<T, A> const& other,
-                              requires_arch<KUTLOG_PORTABLE>) noexcept {
+                              requires_arch<kutlog_portable::portable>) noexcept {
   return kutlog_portable::from_bits<T>(kutlog_portable::bits<T>(self.data) |
                                        kutlog_portable::bits<T>(other.data));
 }
 template <class A, class T>
 inline batch<T, A> bitwise_xor(batch<T, A> const& self, batch<T, A> const& other,
-                               requires_arch<KUTLOG_PORTABLE>) noexcept {
+                               requires_arch<kutlog_portable::portable>) noexcept {
   return kutlog_portable::from_bits<T>(kutlog_portable::bits<T>(self.data) ^
                                        kutlog_portable::bits<T>(other.data));
 }
 // self & ~other, as xsimd defines it.
 template <class A, class T>
 inline batch<T, A> bitwise_andnot(batch<T, A> const& self, batch<T, A> const& other,
-                                  requires_arch<KUTLOG_PORTABLE>) noexcept {
+                                  requires_arch<kutlog_portable::portable>) noexcept {
   return kutlog_portable::from_bits<T>(kutlog_portable::bits<T>(self.data) &
                                        ~kutlog_portable::bits<T>(other.data));
 }
 template <class A, class T>
-inline batch<T, A> bitwise_not(batch<T, A> const& self, requires_arch<KUTLOG_PORTABLE>) noexcept {
+inline batch<T, A> bitwise_not(batch<T, A> const& self, requires_arch<kutlog_portable::portable>) noexcept {
   return kutlog_portable::from_bits<T>(~kutlog_portable::bits<T>(self.data));
 }
 template <class A, class T>
 inline batch_bool<T, A> bitwise_and(batch_bool<T, A> const& self, batch_bool<T, A> const& other,
-                                    requires_arch<KUTLOG_PORTABLE>) noexcept {
+                                    requires_arch<kutlog_portable::portable>) noexcept {
   return self.data & other.data;
 }
 template <class A, class T>
 inline batch_bool<T, A> bitwise_or(batch_bool<T, A> const& self, batch_bool<T, A> const& other,
-                                   requires_arch<KUTLOG_PORTABLE>) noexcept {
+                                   requires_arch<kutlog_portable::portable>) noexcept {
   return self.data | other.data;
 }
 template <class A, class T>
 inline batch_bool<T, A> bitwise_xor(batch_bool<T, A> const& self, batch_bool<T, A> const& other,
-                                    requires_arch<KUTLOG_PORTABLE>) noexcept {
+                                    requires_arch<kutlog_portable::portable>) noexcept {
   return self.data ^ other.data;
 }
 template <class A, class T>
 inline batch_bool<T, A> bitwise_andnot(batch_bool<T, A> const& self,
                                        batch_bool<T, A> const& other,
-                                       requires_arch<KUTLOG_PORTABLE>) noexcept {
+                                       requires_arch<kutlog_portable::portable>) noexcept {
   return self.data & ~other.data;
 }
 template <class A, class T>
 inline batch_bool<T, A> bitwise_not(batch_bool<T, A> const& self,
-                                    requires_arch<KUTLOG_PORTABLE>) noexcept {
+                                    requires_arch<kutlog_portable::portable>) noexcept {
   return ~self.data;
 }
 template <class A, class T, class = std::enable_if_t<std::is_integral_v<T>>>
 inline batch<T, A> bitwise_lshift(batch<T, A> const& self, int32_t other,
-                                  requires_arch<KUTLOG_PORTABLE>) noexcept {
+                                  requires_arch<kutlog_portable::portable>) noexcept {
   return self.data << other;
 }
 // Arithmetic for signed lanes, logical for unsigned ones, as C++ shifts.
 template <class A, class T, class = std::enable_if_t<std::is_integral_v<T>>>
 inline batch<T, A> bitwise_rshift(batch<T, A> const& self, int32_t other,
-                                  requires_arch<KUTLOG_PORTABLE>) noexcept {
+                                  requires_arch<kutlog_portable::portable>) noexcept {
   return self.data >> other;
 }
 template <class A, class T, class = std::enable_if_t<std::is_integral_v<T>>>
 inline batch<T, A> bitwise_lshift(batch<T, A> const& self, batch<T, A> const& other,
-                                  requires_arch<KUTLOG_PORTABLE>) noexcept {
+                                  requires_arch<kutlog_portable::portable>) noexcept {
   return self.data << other.data;
 }
 template <class A, class T, class = std::enable_if_t<std::is_integral_v<T>>>
 inline batch<T, A> bitwise_rshift(batch<T, A> const& self, batch<T, A> const& other,
-                                  requires_arch<KUTLOG_PORTABLE>) noexcept {
+                                  requires_arch<kutlog_portable::portable>) noexcept {
   return self.data >> other.data;
 }
 template <class A, class T, class To>
 inline batch<To, A> bitwise_cast(batch<T, A> const& self, batch<To, A> const&,
-                                 requires_arch<KUTLOG_PORTABLE>) noexcept {
+                                 requires_arch<kutlog_portable::portable>) noexcept {
   return (kutlog_portable::vector_t<To>)self.data;
 }
 // A float lane's mask is an int32 lane's, a double's an int64's: the same register.
 #define KUTLOG_PORTABLE_BOOL_CAST(From, To)                                           \
   template <class A>                                                                 \
   inline batch_bool<To, A> bool_cast(batch_bool<From, A> const& self,                \
-                                     requires_arch<KUTLOG_PORTABLE>) noexcept {      \
+                                     requires_arch<kutlog_portable::portable>) noexcept {      \
     return self.data;                                                                \
   }
 KUTLOG_PORTABLE_BOOL_CAST(int32_t, float)
@@ -308,7 +306,7 @@ KUTLOG_PORTABLE_BOOL_CAST(double, int64_t)
 #define KUTLOG_PORTABLE_COMPARISON(name, op)                                             \
   template <class A, class T>                                                           \
   inline batch_bool<T, A> name(batch<T, A> const& self, batch<T, A> const& other,       \
-                               requires_arch<KUTLOG_PORTABLE>) noexcept {               \
+                               requires_arch<kutlog_portable::portable>) noexcept {               \
     return (kutlog_portable::mask_t<T>)(self.data op other.data);                       \
   }
 KUTLOG_PORTABLE_COMPARISON(eq, ==)
@@ -320,21 +318,21 @@ KUTLOG_PORTABLE_COMPARISON(ge, >=)
 #undef KUTLOG_PORTABLE_COMPARISON
 template <class A, class T>
 inline batch_bool<T, A> eq(batch_bool<T, A> const& self, batch_bool<T, A> const& other,
-                           requires_arch<KUTLOG_PORTABLE>) noexcept {
+                           requires_arch<kutlog_portable::portable>) noexcept {
   return (kutlog_portable::mask_t<T>)(self.data == other.data);
 }
 template <class A, class T>
 inline batch_bool<T, A> neq(batch_bool<T, A> const& self, batch_bool<T, A> const& other,
-                            requires_arch<KUTLOG_PORTABLE>) noexcept {
+                            requires_arch<kutlog_portable::portable>) noexcept {
   return (kutlog_portable::mask_t<T>)(self.data != other.data);
 }
 template <class A, class T, class = std::enable_if_t<std::is_floating_point_v<T>>>
-inline batch_bool<T, A> isnan(batch<T, A> const& self, requires_arch<KUTLOG_PORTABLE>) noexcept {
+inline batch_bool<T, A> isnan(batch<T, A> const& self, requires_arch<kutlog_portable::portable>) noexcept {
   return (kutlog_portable::mask_t<T>)(self.data != self.data);
 }
 template <class A, class T>
 inline batch<T, A> select(batch_bool<T, A> const& condition, batch<T, A> const& if_true,
-                          batch<T, A> const& if_false, requires_arch<KUTLOG_PORTABLE>) noexcept {
+                          batch<T, A> const& if_false, requires_arch<kutlog_portable::portable>) noexcept {
   return kutlog_portable::from_bits<T>((kutlog_portable::bits<T>(if_true.data) & condition.data) |
                                        (kutlog_portable::bits<T>(if_false.data) & ~condition.data));
 }
@@ -342,22 +340,22 @@ inline batch<T, A> select(batch_bool<T, A> const& condition, batch<T, A> const& 
 // where either is NaN.
 template <class A, class T>
 inline batch<T, A> min(batch<T, A> const& self, batch<T, A> const& other,
-                       requires_arch<KUTLOG_PORTABLE>) noexcept {
+                       requires_arch<kutlog_portable::portable>) noexcept {
   return select<A>(lt<A>(self, other, A{}), self, other, A{});
 }
 template <class A, class T>
 inline batch<T, A> max(batch<T, A> const& self, batch<T, A> const& other,
-                       requires_arch<KUTLOG_PORTABLE>) noexcept {
+                       requires_arch<kutlog_portable::portable>) noexcept {
   return select<A>(gt<A>(self, other, A{}), self, other, A{});
 }
 template <class A, class T>
-inline bool all(batch_bool<T, A> const& self, requires_arch<KUTLOG_PORTABLE>) noexcept {
+inline bool all(batch_bool<T, A> const& self, requires_arch<kutlog_portable::portable>) noexcept {
   for (std::size_t i = 0; i < batch<T, A>::size; ++i)
     if (!self.data[i]) return false;
   return true;
 }
 template <class A, class T>
-inline bool any(batch_bool<T, A> const& self, requires_arch<KUTLOG_PORTABLE>) noexcept {
+inline bool any(batch_bool<T, A> const& self, requires_arch<kutlog_portable::portable>) noexcept {
   for (std::size_t i = 0; i < batch<T, A>::size; ++i)
     if (self.data[i]) return true;
   return false;
@@ -375,11 +373,13 @@ inline batch<T, A> saturated(batch<T, A> const& self, batch<T, A> const& other) 
   } else {
     vector_t<T> v;
     for (std::size_t i = 0; i < batch<T, A>::size; ++i) {
-      const bool overflows = kSubtract ? __builtin_sub_overflow(self.data[i], other.data[i], &v[i])
-                                       : __builtin_add_overflow(self.data[i], other.data[i], &v[i]);
+      T lane;
+      const bool overflows = kSubtract ? __builtin_sub_overflow(self.data[i], other.data[i], &lane)
+                                       : __builtin_add_overflow(self.data[i], other.data[i], &lane);
       if (overflows)
-        v[i] = (other.data[i] > 0) != kSubtract ? std::numeric_limits<T>::max()
+        lane = (other.data[i] > 0) != kSubtract ? std::numeric_limits<T>::max()
                                                 : std::numeric_limits<T>::min();
+      v[i] = lane;
     }
     return v;
   }
@@ -396,27 +396,27 @@ inline batch<T, A> zipped(batch<T, A> const& self, batch<T, A> const& other,
 }  // namespace kutlog_portable
 template <class A, class T>
 inline batch<T, A> sadd(batch<T, A> const& self, batch<T, A> const& other,
-                        requires_arch<KUTLOG_PORTABLE>) noexcept {
+                        requires_arch<kutlog_portable::portable>) noexcept {
   return kutlog_portable::saturated<false>(self, other);
 }
 template <class A, class T>
 inline batch<T, A> ssub(batch<T, A> const& self, batch<T, A> const& other,
-                        requires_arch<KUTLOG_PORTABLE>) noexcept {
+                        requires_arch<kutlog_portable::portable>) noexcept {
   return kutlog_portable::saturated<true>(self, other);
 }
 template <class A, class T>
 inline batch<T, A> zip_lo(batch<T, A> const& self, batch<T, A> const& other,
-                          requires_arch<KUTLOG_PORTABLE>) noexcept {
+                          requires_arch<kutlog_portable::portable>) noexcept {
   return kutlog_portable::zipped(self, other, 0);
 }
 template <class A, class T>
 inline batch<T, A> zip_hi(batch<T, A> const& self, batch<T, A> const& other,
-                          requires_arch<KUTLOG_PORTABLE>) noexcept {
+                          requires_arch<kutlog_portable::portable>) noexcept {
   return kutlog_portable::zipped(self, other, batch<T, A>::size / 2);
 }
 // Lane i: the sum of row[i]'s lanes.
 template <class A, class T>
-inline batch<T, A> haddp(batch<T, A> const* row, requires_arch<KUTLOG_PORTABLE>) noexcept {
+inline batch<T, A> haddp(batch<T, A> const* row, requires_arch<kutlog_portable::portable>) noexcept {
   kutlog_portable::vector_t<T> v;
   for (std::size_t i = 0; i < batch<T, A>::size; ++i) {
     v[i] = row[i].data[0];
@@ -434,11 +434,10 @@ template <class A, class From, class To>
   requires(sizeof(From) == sizeof(To) && std::is_floating_point_v<From> != std::is_floating_point_v<To> &&
            std::is_signed_v<From> && std::is_signed_v<To>)
 inline batch<To, A> fast_cast(batch<From, A> const& self, batch<To, A> const&,
-                              requires_arch<KUTLOG_PORTABLE>) noexcept {
+                              requires_arch<kutlog_portable::portable>) noexcept {
   return __builtin_convertvector(self.data, kutlog_portable::vector_t<To>);
 }
 }  // namespace detail
 
-#undef KUTLOG_PORTABLE
 }  // namespace kernel
 }  // namespace xsimd
