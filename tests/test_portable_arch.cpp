@@ -71,8 +71,15 @@ TEST(PortableArch, LaneFunctionsAsTheCLibrary) {
   expect_lanes(xsimd::abs(x), [&](std::size_t i) { return std::fabs(a[i]); });
   expect_lanes(xsimd::sqrt(Floats::load_unaligned(squares.data())),
                [&](std::size_t i) { return std::sqrt(squares[i]); });
-  const Doubles d(-2.5);
-  expect_lanes(xsimd::nearbyint(d), [](std::size_t) { return -2.0; });
+  // Ties to even, the sign of -0.4 kept, integers and what is not finite as they are.
+  const std::array<float, 8> more = {-0.4f, 0x1p23f + 1.0f, kNaN, -kInf, 0.5f, 1.5f, -0x1p30f, 8388607.5f};
+  for (std::size_t at = 0; at < more.size(); at += Floats::size)
+    expect_lanes(xsimd::nearbyint(Floats::load_unaligned(more.data() + at)),
+                 [&](std::size_t i) { return std::nearbyint(more[at + i]); });
+  const std::array<double, 4> doubles = {-2.5, 0x1p52 + 1.0, -0.3, 4503599627370495.5};
+  for (std::size_t at = 0; at < doubles.size(); at += Doubles::size)
+    expect_lanes(xsimd::nearbyint(Doubles::load_unaligned(doubles.data() + at)),
+                 [&](std::size_t i) { return std::nearbyint(doubles[at + i]); });
 }
 
 TEST(PortableArch, ComparisonsSelectsAndReductions) {
