@@ -10,15 +10,19 @@
 #
 # <id> is a C++ identifier (the enumerator kutlog::Arch::<id>), <name> what users type
 # (KUTLOG_ARCH=<name>), CPU the features src/cpu_features.cpp must find in this CPU (and the
-# OS must have enabled) for the arch to be chosen. Entries go best first: dispatch takes the
-# first supported one, and KUTLOG_CPU_HIDE=<name> hides an arch and every one listed before it.
-# The last entry of a platform is its baseline.
+# OS must have enabled) for the arch to be chosen, none for an arch that runs on any CPU.
+# Entries go best first: dispatch takes the first supported one, and KUTLOG_CPU_HIDE=<name>
+# hides an arch and every one listed before it. The last entry of a platform is its baseline.
+#
+# KUTLOG_PORTABLE_ONLY=ON keeps only the portable entry, as on a CPU kutlog has no SIMD arch
+# for: that is how the portable path is built and tested on x86-64 (scripts/test.sh).
+option(KUTLOG_PORTABLE_ONLY "Compile only the portable kernels (no SIMD arch, no SIMD flags)" OFF)
 
 set(KUTLOG_ARCHS)
 function(kutlog_arch id)
   cmake_parse_arguments(PARSE_ARGV 1 arg "" "NAME;XSIMD" "CPU;FLAGS")
-  if(NOT arg_NAME OR NOT arg_XSIMD OR NOT arg_CPU)
-    message(FATAL_ERROR "kutlog_arch(${id}): NAME, XSIMD and CPU are required")
+  if(NOT arg_NAME OR NOT arg_XSIMD)
+    message(FATAL_ERROR "kutlog_arch(${id}): NAME and XSIMD are required")
   endif()
   set(KUTLOG_ARCHS ${KUTLOG_ARCHS} ${id} PARENT_SCOPE)
   set(KUTLOG_ARCH_NAME_${id} ${arg_NAME} PARENT_SCOPE)
@@ -27,7 +31,8 @@ function(kutlog_arch id)
   set(KUTLOG_ARCH_FLAGS_${id} ${arg_FLAGS} PARENT_SCOPE)
 endfunction()
 
-if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|amd64)$")
+if(KUTLOG_PORTABLE_ONLY)
+elseif(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|amd64)$")
   # GCC 12 warns inside its own avx512fintrin.h, whose _mm512_undefined_ps initializes a vector
   # with itself, at -O2 (maybe-uninitialized; uninitialized where a masked load feeds it);
   # clang has no such warning (and warns about the unknown option).
@@ -42,7 +47,14 @@ elseif(CMAKE_SYSTEM_PROCESSOR MATCHES "^(aarch64|arm64|ARM64)$")
   # Advanced SIMD with double lanes and FMA is part of AArch64: no flags.
   kutlog_arch(neon64 NAME neon64 XSIMD xsimd::neon64 CPU neon)
 else()
-  message(WARNING "kutlog has no SIMD arch for ${CMAKE_SYSTEM_PROCESSOR} (issue 13)")
+  message(STATUS "kutlog has no SIMD arch for ${CMAKE_SYSTEM_PROCESSOR}: portable kernels only")
+endif()
+# The same kernel templates on kutlog::simd::portable, an xsimd arch of the compiler's own
+# vectors (kutlog/simd/portable.hpp): no flags, any CPU, correct and slower. Last, so the
+# baseline wherever it is compiled: on x86-64 it runs where SSE4.1 is missing (SSE2, which it
+# compiles to there, is part of x86-64). Not on AArch64, whose NEON is always there.
+if(KUTLOG_PORTABLE_ONLY OR NOT CMAKE_SYSTEM_PROCESSOR MATCHES "^(aarch64|arm64|ARM64)$")
+  kutlog_arch(portable NAME portable XSIMD kutlog::simd::portable)
 endif()
 
 # kutlog/archs.hpp: the list as an X-macro, KUTLOG_ARCHS(X) expanding to

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Installs what is needed, builds, and runs the whole test suite (every label, exhaustive
 # sweeps included); before the tests, it also compiles the library alone as a GCC Debug build
-# in build-debug (compile only, nothing runs there). Then builds everything again with clang,
-# AddressSanitizer and UndefinedBehaviorSanitizer in build-sanitize and runs every test there
+# in build-debug (compile only, nothing runs there). Then builds the portable kernels alone
+# (-DKUTLOG_PORTABLE_ONLY=ON) in build-portable and runs the quick tests there. Then builds
+# everything again with clang, AddressSanitizer and UndefinedBehaviorSanitizer in
+# build-sanitize and runs every test there
 # except the exhaustive sweeps (ctest -LE exhaustive: under ASan they would take hours; the
 # sanitize build does not even register them), the libFuzzer targets included: each replays
 # its committed corpus and crash inputs, then fuzzes for 60 seconds (KUTLOG_FUZZ_SECONDS).
@@ -19,6 +21,12 @@ KUTLOG_BUILD_DIR=${KUTLOG_DEBUG_BUILD_DIR:-build-debug} bash scripts/build.sh \
   -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=g++ -DKUTLOG_TESTS=OFF -DKUTLOG_BENCH=OFF \
   -DKUTLOG_TOOLS=OFF
 ctest --test-dir "${KUTLOG_BUILD_DIR:-build}" -j "${KUTLOG_JOBS:-2}" --output-on-failure
+
+# The portable kernels alone, as on a CPU kutlog has no SIMD arch for (docs/design.md): built
+# without benchmarks in build-portable, its quick tests.
+portable_dir=${KUTLOG_PORTABLE_BUILD_DIR:-build-portable}
+KUTLOG_BUILD_DIR=$portable_dir bash scripts/build.sh -DKUTLOG_PORTABLE_ONLY=ON -DKUTLOG_BENCH=OFF
+ctest --test-dir "$portable_dir" -L quick -j "${KUTLOG_JOBS:-2}" --output-on-failure
 
 sanitize_dir=${KUTLOG_SANITIZE_BUILD_DIR:-build-sanitize}
 KUTLOG_BUILD_DIR=$sanitize_dir bash scripts/build.sh -DCMAKE_BUILD_TYPE=RelWithDebInfo \

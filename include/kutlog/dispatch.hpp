@@ -6,8 +6,9 @@
 // or force_arch() names one. Choosing is thread-safe; the choice is read once per call.
 //
 // The archs come from the registry, cmake/KutlogArchs.cmake, through the generated
-// kutlog/archs.hpp: on x86-64 avx512 (AVX-512 F, CD, DQ, BW, VL + FMA), avx2 (AVX2 + FMA3)
-// and sse4.1 (x86-64-v2, the baseline).
+// kutlog/archs.hpp: on x86-64 avx512 (AVX-512 F, CD, DQ, BW, VL + FMA), avx2 (AVX2 + FMA3),
+// sse4.1 (x86-64-v2) and portable (the baseline: any CPU, no SIMD flags, slower); on AArch64
+// neon64; on any other CPU portable alone.
 //
 // For tests, KUTLOG_CPU_HIDE=avx512[,avx2,...] makes kutlog treat the CPU as lacking those
 // archs (and every arch ranked above them); a name it does not know makes the first query
@@ -38,7 +39,7 @@ inline constexpr std::array kCompiledArchs = {
 #undef KUTLOG_ARCH_VALUE
 };
 
-// The names KUTLOG_ARCH and the tools take ("avx512", "avx2", "sse4.1" on x86-64).
+// The names KUTLOG_ARCH and the tools take ("avx512", "avx2", "sse4.1", "portable" on x86-64).
 std::string_view arch_name(Arch arch);
 // The arch of that name; std::invalid_argument listing the valid names otherwise.
 Arch parse_arch(std::string_view name);

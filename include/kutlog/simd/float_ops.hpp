@@ -196,6 +196,22 @@ inline floats<Arch> narrow(doubles<Arch> low, doubles<Arch> high) {
 }
 #endif
 
+// The portable arch: 4 float lanes, 2 double lanes, converted lane by lane.
+template <arch_of<portable> Arch>
+inline Pair<doubles<Arch>> widen(floats<Arch> x) {
+  constexpr std::size_t half = doubles<Arch>::size;
+  typename doubles<Arch>::register_type low, high;
+  for (std::size_t i = 0; i < half; ++i) low[i] = x.data[i], high[i] = x.data[half + i];
+  return {doubles<Arch>(low), doubles<Arch>(high)};
+}
+template <arch_of<portable> Arch>
+inline floats<Arch> narrow(doubles<Arch> low, doubles<Arch> high) {
+  constexpr std::size_t half = doubles<Arch>::size;
+  typename floats<Arch>::register_type v;
+  for (std::size_t i = 0; i < half; ++i) v[i] = float(low.data[i]), v[half + i] = float(high.data[i]);
+  return v;
+}
+
 // x * 2^n for integer-valued n in [-1022, 1023], one rounding (AVX-512's scalef does it in
 // one instruction).
 template <class Arch>

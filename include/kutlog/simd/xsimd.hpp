@@ -27,7 +27,17 @@
 #endif
 #endif
 
+// The portable arch declares its kernels before xsimd defines batch (kutlog/simd/portable.hpp).
+#include "kutlog/simd/portable.hpp"
+
 #include <xsimd/xsimd.hpp>
+// On a CPU xsimd 8.1 has no arch for, xsimd.hpp stops before batch: the portable arch needs it.
+#ifdef XSIMD_NO_SUPPORTED_ARCHITECTURE
+#include <xsimd/types/xsimd_batch.hpp>
+#include <xsimd/types/xsimd_batch_constant.hpp>
+#include <xsimd/types/xsimd_traits.hpp>
+#include <xsimd/types/xsimd_api.hpp>
+#endif
 
 // xsimd 8.1 on AArch64 (neon64) takes its float division, square root and reciprocal from
 // 32-bit ARM's NEON: a / b and sqrt(x) are estimates refined by two Newton steps (neither
