@@ -23,9 +23,11 @@ KUTLOG_BUILD_DIR=${KUTLOG_DEBUG_BUILD_DIR:-build-debug} bash scripts/build.sh \
 ctest --test-dir "${KUTLOG_BUILD_DIR:-build}" -j "${KUTLOG_JOBS:-2}" --output-on-failure
 
 # The portable kernels alone, as on a CPU kutlog has no SIMD arch for (docs/design.md): built
-# without benchmarks in build-portable, its quick tests.
+# without benchmarks and tools (which do not depend on the arch) in build-portable, its quick
+# tests.
 portable_dir=${KUTLOG_PORTABLE_BUILD_DIR:-build-portable}
-KUTLOG_BUILD_DIR=$portable_dir bash scripts/build.sh -DKUTLOG_PORTABLE_ONLY=ON -DKUTLOG_BENCH=OFF
+KUTLOG_BUILD_DIR=$portable_dir bash scripts/build.sh -DKUTLOG_PORTABLE_ONLY=ON -DKUTLOG_BENCH=OFF \
+  -DKUTLOG_TOOLS=OFF
 ctest --test-dir "$portable_dir" -L quick -j "${KUTLOG_JOBS:-2}" --output-on-failure
 
 sanitize_dir=${KUTLOG_SANITIZE_BUILD_DIR:-build-sanitize}
