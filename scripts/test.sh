@@ -1,8 +1,7 @@
 #!/usr/bin/env bash
 # Installs what is needed, builds, and runs the whole test suite (every label, exhaustive
 # sweeps included); before the tests, it also compiles the library alone as a GCC Debug build
-# in build-debug (compile only, nothing runs there). Then cross-compiles for aarch64 and runs
-# every test under qemu-aarch64 (scripts/test-aarch64.sh). Then builds everything again with clang,
+# in build-debug (compile only, nothing runs there). Then builds everything again with clang,
 # AddressSanitizer and UndefinedBehaviorSanitizer in build-sanitize and runs every test there
 # except the exhaustive sweeps (ctest -LE exhaustive: under ASan they would take hours; the
 # sanitize build does not even register them), the libFuzzer targets included: each replays
@@ -20,10 +19,6 @@ KUTLOG_BUILD_DIR=${KUTLOG_DEBUG_BUILD_DIR:-build-debug} bash scripts/build.sh \
   -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=g++ -DKUTLOG_TESTS=OFF -DKUTLOG_BENCH=OFF \
   -DKUTLOG_TOOLS=OFF
 ctest --test-dir "${KUTLOG_BUILD_DIR:-build}" -j "${KUTLOG_JOBS:-2}" --output-on-failure
-# aarch64 (NEON) cross-compiled and run under qemu-aarch64, the sweeps sampled. Before the
-# sanitizers rather than after: a break of the NEON port shows some 12 minutes sooner, and the
-# fuzzing statistics stay the last lines of the run.
-bash scripts/test-aarch64.sh
 
 sanitize_dir=${KUTLOG_SANITIZE_BUILD_DIR:-build-sanitize}
 KUTLOG_BUILD_DIR=$sanitize_dir bash scripts/build.sh -DCMAKE_BUILD_TYPE=RelWithDebInfo \
