@@ -21,4 +21,10 @@ set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY BOTH)
 set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE BOTH)
 set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE BOTH)
 
-set(CMAKE_CROSSCOMPILING_EMULATOR qemu-aarch64 -L /usr/aarch64-linux-gnu)
+# The loader and the C library must come from one build of glibc. The programs load the arm64
+# libraries (libc6:arm64, libgtest, libmpfr) from /lib/aarch64-linux-gnu, so the loader is that
+# package's /lib/ld-linux-aarch64.so.1: `-L /`, not the cross compiler's -L /usr/aarch64-linux-gnu.
+# The latter's ld.so (libc6-arm64-cross 2.36-8cross1) loaded libc.so.6 of libc6:arm64
+# (2.36-9+deb12u14) all the same, and with that mismatched pair pthread_create spun in ld.so
+# before even calling clone: every test that started a thread seemed to crawl or hang.
+set(CMAKE_CROSSCOMPILING_EMULATOR qemu-aarch64 -L /)

@@ -15,7 +15,7 @@ packages=(
 )
 if [ "${1:-}" = --aarch64 ]; then
   dpkg --print-foreign-architectures | grep -qx arm64 || dpkg --add-architecture arm64
-  packages+=(libxsimd-dev:arm64 libgtest-dev:arm64 libmpfr-dev:arm64 libfmt-dev:arm64)
+  packages+=(libc6:arm64 libxsimd-dev:arm64 libgtest-dev:arm64 libmpfr-dev:arm64 libfmt-dev:arm64)
 fi
 
 missing=()

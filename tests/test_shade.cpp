@@ -65,7 +65,7 @@ struct Window {
 };
 Window expected_window(const ref::KutlogLobe& reference, double coef, double t, double dt,
                        double n_dot_l) {
-  const double bound = kLobeBounds[0].max_abs_error * coef;  // precise
+  const double bound = kLobeBounds[0].max_abs_error() * coef;  // precise
   const double f_lo = coef * reference.eval(t - dt) - bound;
   const double f_hi = coef * reference.eval(t + dt) + bound;
   const double l_lo = std::max(0.0, n_dot_l - test::kNDotLError);

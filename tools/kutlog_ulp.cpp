@@ -41,7 +41,7 @@ void print_profile(const std::vector<Row>& rows, const std::string& function, Fo
         table.add_row({std::string(bound->kernel), std::string(bound->domain), row.function,
                        row.arch, fmt::format("{:.9g}", row.profile.worst_input[b]),
                        fmt::format("{:.4f}", row.profile.max_ulp[b]),
-                       fmt::format("{:.2f}", bound->max_ulp),
+                       fmt::format("{:.2f}", bound->max_ulp()),
                        fmt::format("{:.1f}", bound->promised_ulp)});
   table.print(format);
 }
@@ -64,7 +64,7 @@ void print_summary(const std::vector<Row>& rows, const std::vector<std::string>&
     }
     table.add_row({std::string(bound->kernel), std::string(bound->domain),
                    fmt::format("{:.1f}", bound->promised_ulp),
-                   fmt::format("{:.2f}", bound->max_ulp), fmt::format("{:.4f}", merged.max_ulp),
+                   fmt::format("{:.2f}", bound->max_ulp()), fmt::format("{:.4f}", merged.max_ulp),
                    format_input(merged), archs,
                    fmt::format("{:.3g}", double(merged.inputs))});
   }

@@ -90,7 +90,7 @@ void fuzz_one(FuzzedDataProvider& data) {
   if (pow_scalar) call.parameters = "y=" + std::to_string(scalar_y);
   if (pow_arrays) call.arrays = {{"y", y.data()}};
   const double bound =
-      find_accuracy_bound(pow_arrays || pow_scalar ? "pow" : unary[function].name)->max_ulp;
+      find_accuracy_bound(pow_arrays || pow_scalar ? "pow" : unary[function].name)->max_ulp();
   run_on_every_arch(
       x, "x", call,
       [&](const float* in, float* out) {

@@ -249,7 +249,7 @@ std::string_view normalization_name(Normalization normalization) {
 Range lobe_range(const LobeUnderTest& lobe, Variant variant, Normalization normalization,
                  double t_lo, double t_hi) {
   const double scale = normalization == Normalization::exact_coef ? lobe.lobe.coef_exact() : 1.0;
-  const double bound = kLobeBounds[variant == Variant::precise ? 0 : 1].max_abs_error;
+  const double bound = kLobeBounds[variant == Variant::precise ? 0 : 1].max_abs_error();
   const double peak = double(float(scale));
   // The smooth part between the cut and 1, where F is within the bound.
   const auto smooth = [&](double t) { return lobe.reference.eval(t) * scale; };

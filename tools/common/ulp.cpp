@@ -31,12 +31,6 @@ void parallel_for(std::uint64_t chunks, unsigned requested_threads,
                   const std::function<void(std::uint64_t, unsigned)>& work,
                   const std::string& progress_label) {
   const unsigned threads = thread_count(requested_threads);
-  // One thread: the calling one. Under qemu-aarch64, code run on a second thread was found
-  // thousands of times slower than the same code on the main thread (scripts/test-aarch64.sh).
-  if (threads == 1 && progress_label.empty()) {
-    for (std::uint64_t chunk = 0; chunk < chunks; ++chunk) work(chunk, 0);
-    return;
-  }
   std::atomic<std::uint64_t> next{0}, done{0};
   std::vector<std::thread> workers;
   for (unsigned t = 0; t < threads; ++t)
