@@ -156,6 +156,15 @@ inline void store(batch_bool<T, A> const& self, bool* memory,
                   requires_arch<kutlog_portable::portable>) noexcept {
   for (std::size_t i = 0; i < batch<T, A>::size; ++i) memory[i] = self.data[i] != 0;
 }
+// One lane replaced: what xsimd's generic gather is made of (the lobe sampler's table
+// lookups); the generic insert would need a select on a compile-time mask.
+template <class A, class T, std::size_t I>
+inline batch<T, A> insert(batch<T, A> const& self, T value, index<I>,
+                          requires_arch<kutlog_portable::portable>) noexcept {
+  kutlog_portable::vector_t<T> lanes = self.data;
+  lanes[I] = value;
+  return lanes;
+}
 
 // ---- arithmetic ----------------------------------------------------------------------------
 template <class A, class T>
