@@ -2,9 +2,10 @@
 # Installs what is needed, builds, and runs the whole test suite (every label, exhaustive
 # sweeps included); before the tests, it also compiles the library alone as a GCC Debug build
 # in build-debug (compile only, nothing runs there). Then builds the portable kernels alone
-# (-DKUTLOG_PORTABLE_ONLY=ON) in build-portable and runs the quick tests there. Then builds
-# everything again with clang, AddressSanitizer and UndefinedBehaviorSanitizer in
-# build-sanitize and runs every test there
+# (-DKUTLOG_PORTABLE_ONLY=ON) in build-portable and runs the quick tests there. Then
+# cross-compiles for aarch64 (NEON) and runs every test under qemu-aarch64, the sweeps sampled
+# (scripts/test-aarch64.sh). Then builds everything again with clang, AddressSanitizer and
+# UndefinedBehaviorSanitizer in build-sanitize and runs every test there
 # except the exhaustive sweeps (ctest -LE exhaustive: under ASan they would take hours; the
 # sanitize build does not even register them), the libFuzzer targets included: each replays
 # its committed corpus and crash inputs, then fuzzes for 60 seconds (KUTLOG_FUZZ_SECONDS).
@@ -29,6 +30,10 @@ portable_dir=${KUTLOG_PORTABLE_BUILD_DIR:-build-portable}
 KUTLOG_BUILD_DIR=$portable_dir bash scripts/build.sh -DKUTLOG_PORTABLE_ONLY=ON -DKUTLOG_BENCH=OFF \
   -DKUTLOG_TOOLS=OFF
 ctest --test-dir "$portable_dir" -L quick -j "${KUTLOG_JOBS:-2}" --output-on-failure
+
+# aarch64 (NEON) cross-compiled and run under qemu-aarch64. Before the sanitizers: a break of
+# the NEON port shows sooner, and the fuzzing statistics stay the last lines of the run.
+bash scripts/test-aarch64.sh
 
 sanitize_dir=${KUTLOG_SANITIZE_BUILD_DIR:-build-sanitize}
 KUTLOG_BUILD_DIR=$sanitize_dir bash scripts/build.sh -DCMAKE_BUILD_TYPE=RelWithDebInfo \
