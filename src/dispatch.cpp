@@ -11,6 +11,7 @@
 
 #include "arch/kernel_table.hpp"
 #include "cpu_features.hpp"
+#include "epicenter_check.hpp"
 #include "kutlog/lobe.hpp"
 #include "kutlog/math.hpp"
 #include "kutlog/reference.hpp"
@@ -170,6 +171,12 @@ void force_arch(std::string_view name) { force_arch(parse_arch(name)); }
 void reset_arch() {
   forced_arch.store(kNotForced, std::memory_order_relaxed);
   active_table_cache.store(nullptr, std::memory_order_relaxed);
+}
+
+const detail::LobeArrayKernels* detail::fused_lobe_array_kernels() {
+  for (Arch arch : kCompiledArchs)
+    if (arch_supported(arch) && table_of(arch).fused_fma) return &table_of(arch).kutlog_lobe;
+  return nullptr;
 }
 
 namespace math {

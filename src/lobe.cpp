@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "kutlog/reference.hpp"
+#include "epicenter_check.hpp"
 #include "lobe_bound.hpp"
 #include "lobe_cut.hpp"
 #include "polynomial_fit.hpp"
@@ -69,6 +70,15 @@ class QuotientSeries {
     return double(tail) + floor_;
   }
   bool converged() const { return converged_; }
+  // The fit of the lowest degree whose truncation is below 2^-40 of the peak (w_max q), or of
+  // the highest degree the series has: a reference for src/epicenter_check.hpp.
+  std::optional<detail::QuotientFit> reference_fit() {
+    if (!converged_) return std::nullopt;
+    int degree = 1;
+    while (degree + 1 < int(chebyshev_.size()) && truncation_error(degree) * w_max_ > 0x1p-40)
+      ++degree;
+    return fit(degree);
+  }
 
  private:
   double w_max_;
@@ -79,49 +89,67 @@ class QuotientSeries {
   double floor_ = 0;
 };
 
-bool meets(const LobeKernel& kernel, Arithmetic arithmetic, const detail::QuotientFit& fit,
-           double scale, const detail::LobeProfile& profile, const Target& target) {
-  const detail::CertifiedError error =
-      detail::certified_error(kernel, arithmetic, fit, scale, profile, target);
-  return error.abs_error <= target.abs_error && error.epicenter_ulp <= target.epicenter_ulp;
-}
 
 // Multiplications of B^k by squaring (k = 5: B^2, B^4, B^4 B).
 int power_cost(int k) { return std::bit_width(unsigned(k)) + std::popcount(unsigned(k)) - 2; }
 
+// Whether a kernel meets the target: by its certified bound or, for a fused kernel (one
+// whose bound met the absolute promise and missed the epicenter's by at most twice), by
+// running it on every float of the epicenter (src/epicenter_check.hpp).
+bool meets(const LobeKernel& kernel, Arithmetic arithmetic, const detail::QuotientFit& fit,
+           double scale, const detail::LobeProfile& profile, const Target& target,
+           QuotientSeries* series_to_run) {
+  const Target limit{target.abs_error, (series_to_run ? 2 : 1) * target.epicenter_ulp};
+  const detail::CertifiedError certified =
+      detail::certified_error(kernel, arithmetic, fit, scale, profile, limit);
+  if (certified.abs_error > target.abs_error || certified.epicenter_ulp > limit.epicenter_ulp)
+    return false;
+  if (certified.epicenter_ulp <= target.epicenter_ulp) return true;
+  const std::optional<detail::QuotientFit> reference = series_to_run->reference_fit();
+  if (!reference) return false;
+  const std::optional<double> measured =
+      detail::measured_epicenter_ulp(kernel, *reference, scale, profile.w_epicenter);
+  return measured && *measured <= target.epicenter_ulp;
+}
+
 // F = scale - w q(s), q in powers of s = center_t - t, the distance to the cut-off
 // (center_t ~ cos(gran)): near the cut-off, where scale - w q cancels, s p(s) vanishes and
 // only q's constant term is rounded; near t = 1 the errors of q are multiplied by w, small
-// there. The lowest degree whose certified error meets the target, if one does.
+// there. The lowest degree that meets the target, if one does: first in the plain form (one
+// multiply-add per degree), its bound certified or, with FMA, its epicenter run; else, with
+// FMA, in the compensated form, about ten operations more.
 std::optional<LobeKernel> fit_polynomial(LobeKernel kernel, QuotientSeries& series, double w_max,
                                          double scale, const detail::LobeProfile& profile,
                                          const Target& target, Arithmetic arithmetic) {
   kernel.form = LobeKernel::Form::polynomial;
   const float scale_lo = float(scale - double(kernel.scale_f));
-  for (int degree = 1; degree <= 16 && series.converged(); ++degree) {
-    // The approximation alone must leave room: w_max q's truncation error at least.
-    if (series.truncation_error(degree) * w_max > target.abs_error) continue;
-    const detail::QuotientFit fit = *series.fit(degree);
-    kernel.degree = degree;
-    for (int i = 0; i <= degree; ++i) {
-      kernel.q_d[i] = double(scale * fit.monomials[i]);
-      kernel.q_f[i] = float(kernel.q_d[i]);
+  for (bool compensated : {false, true}) {
+    if (compensated && arithmetic != Arithmetic::fused) break;
+    kernel.compensated = compensated;
+    for (int degree = 1; degree <= 16 && series.converged(); ++degree) {
+      // The approximation alone must leave room: w_max q's truncation error at least.
+      if (series.truncation_error(degree) * w_max > target.abs_error) continue;
+      const detail::QuotientFit fit = *series.fit(degree);
+      kernel.degree = degree;
+      for (int i = 0; i <= degree; ++i) {
+        kernel.q_d[i] = double(scale * fit.monomials[i]);
+        kernel.q_f[i] = float(kernel.q_d[i]);
+      }
+      // The scale whole, else split (scale_f + (scale_lo - w q): one more rounding, of a term
+      // smaller than the output, against scale_f's whole rounding error in a lower binade).
+      const bool split = arithmetic != Arithmetic::scalar && (compensated || scale_lo != 0);
+      kernel.scale_lo = 0;
+      if (!compensated && meets(kernel, arithmetic, fit, scale, profile, target, nullptr))
+        return kernel;
+      kernel.scale_lo = scale_lo;
+      QuotientSeries* series_to_run =
+          !compensated && arithmetic == Arithmetic::fused ? &series : nullptr;
+      if ((split || series_to_run) &&
+          meets(kernel, arithmetic, fit, scale, profile, target, series_to_run))
+        return kernel;
+      // Once the fit's own error is negligible, a higher degree only adds roundings.
+      if (series.truncation_error(degree) * w_max < 0x1p-8 * target.abs_error) break;
     }
-    // The scale whole, else split (scale_f + (scale_lo - w q): one more rounding, of a term
-    // smaller than the output, against scale_f's whole rounding error in a lower binade).
-    kernel.scale_lo = 0;
-    if (meets(kernel, arithmetic, fit, scale, profile, target)) return kernel;
-    kernel.scale_lo = scale_lo;
-    if (scale_lo != 0 && arithmetic != Arithmetic::scalar &&
-        meets(kernel, arithmetic, fit, scale, profile, target))
-      return kernel;
-    // Else, with FMA, q's last step exact (LobeKernel::compensated): six operations more.
-    kernel.compensated = arithmetic == Arithmetic::fused;
-    if (kernel.compensated && meets(kernel, arithmetic, fit, scale, profile, target)) return kernel;
-    kernel.compensated = false;
-    kernel.scale_lo = 0;
-    // Once the fit's own error is negligible, a higher degree only adds roundings.
-    if (series.truncation_error(degree) * w_max < 0x1p-8 * target.abs_error) break;
   }
   return std::nullopt;
 }
@@ -139,7 +167,7 @@ std::optional<LobeKernel> fit_base_power(LobeKernel kernel, QuotientSeries& seri
     kernel.degree = degree;
     kernel.q_d.fill(0);
     for (int i = 0; i <= degree; ++i) kernel.q_d[i] = double(fit->monomials[i]);
-    if (meets(kernel, arithmetic, *fit, scale, profile, target)) return kernel;
+    if (meets(kernel, arithmetic, *fit, scale, profile, target, nullptr)) return kernel;
   }
   return std::nullopt;
 }

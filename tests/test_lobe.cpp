@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <random>
 #include <string>
 #include <utility>
@@ -19,6 +20,9 @@
 #include "expect_invalid.hpp"
 #include "lobe_accuracy.hpp"
 #include "lobe_case.hpp"
+#include "arch/kernel_table.hpp"
+#include "epicenter_check.hpp"
+#include "lobe_bound.hpp"
 #include "polynomial_fit.hpp"
 #include "test_archs.hpp"
 
@@ -240,6 +244,68 @@ TEST(Lobe, ExtremeParametersStillMeetThePreciseBound) {
                             LobeCase{1e6, 2, 0.01}, LobeCase{65, 64, 0.5}}) {
     const Lobe lobe(c.n, c.k, c.Q);
     expect_within_bounds(lobe, tools::measure_lobe(lobe, {4099, 1}));
+  }
+}
+
+// The setup accepts an FMA kernel whose certified bound misses the epicenter's 2 ulps when
+// src/epicenter_check.hpp, run on every float of the epicenter, measures it within them. The
+// check must measure what an independent sweep measures (against cos^k(c acos t) in long
+// double, the ulps counted apart), and see a kernel that misses.
+TEST(EpicenterCheck, MeasuresWhatAnIndependentSweepMeasures) {
+  const detail::LobeArrayKernels* fused = detail::fused_lobe_array_kernels();
+  if (!fused) GTEST_SKIP() << "no FMA arch on this CPU";
+  for (const LobeCase& c : {LobeCase{1000, 3, 0.5}, LobeCase{1000, 5, 0.5}, LobeCase{4000, 2, 0.3}}) {
+    const Lobe lobe(c.n, c.k, c.Q);
+    const double scale = lobe.coef_exact();
+    const double w_max = 2 * std::pow(std::sin(0.5 * std::min(lobe.cutoff_angle(), M_PI / 2)), 2);
+    const detail::LobeShape shape{lobe.c(), lobe.k()};
+    const double w_epicenter = detail::lobe_profile(shape, w_max).w_epicenter;
+    LobeKernel kernel = lobe.kernel(Variant::precise, Normalization::exact_coef, Arithmetic::fused);
+    // The reference fit: q = (1 - F) / w in powers of s = center_t - t, to long double.
+    const auto q = [&](detail::Real w) {  // at w = 0, its limit
+      w = std::max(w, detail::Real(0x1p-60) * w_max);
+      return detail::Real(shape.one_minus_power(double(w), lobe.k())) / w;
+    };
+    const detail::ChebyshevSeries series = detail::chebyshev_series(q, 0, w_max, 0x1p-50, 512);
+    ASSERT_LE(series.measured_error, 0x1p-48);
+    const detail::Real center = 1 - detail::Real(kernel.center_t);
+    const detail::QuotientFit reference{
+        series.monomials(int(series.coefficients.size()) - 1, center),
+        0x1p-46 * double(q(0))};
+
+    // The independent sweep: every float t from 1 down while F >= 0.6.
+    const auto sweep = [&](const LobeKernel& run) {
+      std::vector<float> t;
+      for (float x = 1.0f;; x = std::nextafter(x, 0.0f)) {
+        if (std::pow(std::cos(lobe.c() * std::acos((long double)x)), lobe.k()) < 0.6L) break;
+        t.push_back(x);
+      }
+      std::vector<float> out(t.size());
+      fused->of(run)(run, t.data(), out.data(), t.size());
+      double worst = 0;
+      for (std::size_t i = 0; i < t.size(); ++i) {
+        const long double exact =
+            scale * std::pow(std::cos(lobe.c() * std::acos((long double)t[i])), lobe.k());
+        worst = std::max(worst, double(std::fabs(out[i] - exact)) /
+                                    detail::ulp_of_float(double(exact)));
+      }
+      return worst;
+    };
+    const std::optional<double> measured =
+        detail::measured_epicenter_ulp(kernel, reference, scale, w_epicenter);
+    const std::string name = testing::PrintToString(c);
+    ASSERT_TRUE(measured) << name;
+    const double independent = sweep(kernel);
+    EXPECT_LE(independent, 2.0) << name;
+    // The check adds its reference's error bound (about 2^-20 ulp here) and sweeps a few
+    // floats past F = 0.6 (w_epicenter is rounded up).
+    EXPECT_NEAR(*measured, independent, 0.01) << name;
+    // A kernel that misses: its linear coefficient one part in 2^16 off.
+    kernel.q_f[1] *= 1 + 0x1p-16f;
+    const std::optional<double> missed =
+        detail::measured_epicenter_ulp(kernel, reference, scale, w_epicenter);
+    ASSERT_TRUE(missed);
+    EXPECT_GT(*missed, 2.0) << name;
   }
 }
 

@@ -9,7 +9,8 @@
 // so a polynomial fitted per material reproduces it; the setup accepts a fit only when a
 // certified bound on its error (the fit's Chebyshev tail plus every rounding of the arithmetic
 // that will run it, over every float of the support: src/lobe_bound.hpp) meets the promise,
-// in about 0.1 ms per Lobe. Where
+// or, for an FMA kernel whose bound misses only the epicenter's ulps, when the kernel run on
+// every float of the epicenter meets it (src/epicenter_check.hpp); about 0.1 ms per Lobe. Where
 // float evaluation cannot meet the bound (lobes whose polynomial is ill-conditioned in float,
 // such as n close to k), the lobe is evaluated in double lanes as B^k with B = cos(c acos t),
 // whose fit always converges.
@@ -22,8 +23,8 @@
 //   fast:    |out - scale F| <= 2^-16 scale everywhere.
 // Measured over every float t in [-1, 1] on the grid n in {k+1, 10, 100, 1000, 10000}, k in
 // 1..5, Q in {0.1, 0.5, 0.9}, and on random lobes over n in [0.5, 10^6], k in 1..64, Q in
-// [0.01, 0.99]; each kernel is accepted at setup only when its certified bound meets the
-// promise (a fit that misses is never kept).
+// [0.01, 0.99]; each kernel is accepted at setup only when its certified bound, or its run over
+// every float of the epicenter, meets the promise (a fit that misses is never kept).
 //
 // Data rule (the reference's): t > 1 gives F(1) = 1 (coef when normalized), t at or below
 // cos(gran) and t <= 0 give 0, NaN gives NaN. Any count, any alignment, out may equal t.
