@@ -210,9 +210,9 @@ void Lobe::eval(const float* t, float* out, std::size_t count, Variant variant,
   const detail::KernelTable* table = active_table_cache.load(std::memory_order_relaxed);
   if (!table || (normalization == Normalization::exact_coef && !coef_fits_float_)) [[unlikely]]
     return eval_out_of_line(t, out, count, variant, normalization);
-  const LobeKernel& chosen = kernels_[kernel_index(
-      variant, normalization, table->fused_fma ? Arithmetic::fused : Arithmetic::unfused)];
-  table->kutlog_lobe.of(chosen)(chosen, t, out, count);
+  const int index = kernel_index(variant, normalization,
+                                 table->fused_fma ? Arithmetic::fused : Arithmetic::unfused);
+  table->kutlog_lobe.by_slot[array_slots_[index]](kernels_[index], t, out, count);
 }
 void Lobe::eval_out_of_line(const float* t, float* out, std::size_t count, Variant variant,
                             Normalization normalization) const {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "kutlog/reference.hpp"
+#include "arch/kernel_table.hpp"
 #include "epicenter_check.hpp"
 #include "lobe_bound.hpp"
 #include "lobe_cut.hpp"
@@ -236,10 +237,11 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
       for (Arithmetic arithmetic : {Arithmetic::unfused, Arithmetic::fused, Arithmetic::scalar}) {
         if (normalization == Normalization::exact_coef && !coef_fits_float_) continue;
         const Target& target = variant == Variant::fast ? kFastTarget : kPreciseTarget;
-        kernels_[kernel_index(variant, normalization, arithmetic)] = fit_kernel(
-            reference, polynomial_series, base_series, w_max,
-            normalization == Normalization::exact_coef ? coef_exact_ : 1.0, profile, target,
-            arithmetic);
+        const int index = kernel_index(variant, normalization, arithmetic);
+        kernels_[index] = fit_kernel(reference, polynomial_series, base_series, w_max,
+                                     normalization == Normalization::exact_coef ? coef_exact_ : 1.0,
+                                     profile, target, arithmetic);
+        array_slots_[index] = std::uint8_t(detail::LobeArrayKernels::slot_of(kernels_[index]));
       }
 }
 

@@ -214,6 +214,10 @@ class Lobe {
     return (int(variant) * 2 + int(normalization)) * 3 + int(arithmetic);
   }
   LobeKernel kernels_[2 * 2 * 3];
+  // The slot of each SIMD kernel's array loop in the per-arch tables
+  // (src/arch/kernel_table.hpp), computed at setup: a call reads it instead of testing the
+  // kernel's form, degree and finish.
+  std::uint8_t array_slots_[2 * 2 * 3] = {};
 };
 
 // What the per-lane kernel needs of one material, precomputed (kutlog/simd/lobe.hpp). With

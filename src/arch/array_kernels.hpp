@@ -93,17 +93,24 @@ inline void map_arrays(const Kernel& kernel, const float* const (&inputs)[Inputs
 // The lobe over an array: the polynomial form with its degree as a template argument (unrolled,
 // coefficients in registers), the base_power form generic. The table holds one per degree, so
 // that a call picks its loop with one index and no further dispatch.
-template <class Arch, int kDegree>
+template <class Arch, int kDegree, simd::LobeFinish kFinish = simd::LobeFinish::any>
 void kutlog_lobe_array(const LobeKernel& kernel, const float* t, float* out, std::size_t count) {
-  map_arrays<Arch, 1>(simd::PreparedLobe<Arch, kDegree>(kernel), {t}, out, count, 1.0f);
+  map_arrays<Arch, 1>(simd::PreparedLobe<Arch, kDegree, kFinish>(kernel), {t}, out, count, 1.0f);
 }
 template <class Arch>
 constexpr LobeArrayKernels lobe_array_kernels() {
+  using simd::LobeFinish;
+  // An FMA-less arch runs a compensated kernel (never given it: see LobeArrayKernels) as split.
+  constexpr LobeFinish kCompensated =
+      simd::has_fused_fma<Arch> ? LobeFinish::compensated : LobeFinish::split;
   LobeArrayKernels kernels{};
   [&]<int... degree>(std::integer_sequence<int, degree...>) {
-    ((kernels.polynomial_of_degree[degree] = &kutlog_lobe_array<Arch, degree>), ...);
+    ((kernels.by_slot[3 * degree] = &kutlog_lobe_array<Arch, degree, LobeFinish::plain>,
+      kernels.by_slot[3 * degree + 1] = &kutlog_lobe_array<Arch, degree, LobeFinish::split>,
+      kernels.by_slot[3 * degree + 2] = &kutlog_lobe_array<Arch, degree, kCompensated>),
+     ...);
   }(std::make_integer_sequence<int, LobeArrayKernels::kMaxUnrolledDegree + 1>());
-  kernels.any = &kutlog_lobe_array<Arch, -1>;
+  kernels.by_slot[LobeArrayKernels::kSlots - 1] = &kutlog_lobe_array<Arch, -1>;
   return kernels;
 }
 

@@ -15,17 +15,21 @@ using BinaryArrayKernel = void (*)(const float*, const float*, float*, std::size
 using BinaryScalarArrayKernel = void (*)(const float*, float, float*, std::size_t);
 
 using LobeArrayKernel = void (*)(const LobeKernel&, const float*, float*, std::size_t);
-// The lobe's array loops: unrolled for each polynomial degree up to kMaxUnrolledDegree, and one
-// for any kernel.
+// The lobe's array loops, by slot: for the polynomial form of each degree up to
+// kMaxUnrolledDegree, one per finish (plain, split, compensated: simd::LobeFinish), unrolled
+// and testing no flag; in the last slot, one for any kernel. A Lobe computes its kernels'
+// slots at setup, so that a call picks its loop with one load. (FMA-less archs are never
+// given a compensated kernel: Lobe keeps those for Arithmetic::fused.)
 struct LobeArrayKernels {
   static constexpr int kMaxUnrolledDegree = 16;
-  LobeArrayKernel polynomial_of_degree[kMaxUnrolledDegree + 1];
-  LobeArrayKernel any;
-  LobeArrayKernel of(const LobeKernel& kernel) const {
-    return kernel.form == LobeKernel::Form::polynomial && kernel.degree <= kMaxUnrolledDegree
-               ? polynomial_of_degree[kernel.degree]
-               : any;
+  static constexpr int kSlots = 3 * (kMaxUnrolledDegree + 1) + 1;
+  LobeArrayKernel by_slot[kSlots];
+  static constexpr int slot_of(const LobeKernel& kernel) {
+    if (kernel.form != LobeKernel::Form::polynomial || kernel.degree > kMaxUnrolledDegree)
+      return kSlots - 1;
+    return 3 * kernel.degree + (kernel.compensated ? 2 : kernel.scale_lo != 0 ? 1 : 0);
   }
+  LobeArrayKernel of(const LobeKernel& kernel) const { return by_slot[slot_of(kernel)]; }
 };
 using PowerLobeArrayKernel = void (*)(const float*, float n, float scale, float*, std::size_t);
 

@@ -35,12 +35,25 @@ inline Batch clamp_zero_to(Batch value, Batch upper) {
 }
 }  // namespace detail
 
+// How a polynomial kernel ends: scale - w q (plain), scale_f + (scale_lo - w q) (split), or
+// with q's last step exact (compensated, FMA archs only); `any` reads it from the kernel.
+enum class LobeFinish { any, plain, split, compensated };
+
+// The finish a kernel runs with on an arch: what PreparedLobe<Arch, kDegree, finish> needs.
+template <class Arch>
+constexpr LobeFinish lobe_finish(const LobeKernel& kernel) {
+  if (has_fused_fma<Arch> && kernel.compensated) return LobeFinish::compensated;
+  return kernel.scale_lo != 0 ? LobeFinish::split : LobeFinish::plain;
+}
+
 // A LobeKernel with its constants broadcast once, for loops over many batches.
 // kDegree >= 0 fixes the float form's degree (kernel.degree must equal it): Horner's rule is
 // then unrolled with the coefficients in registers, about twice as fast as the generic loop
-// at degree 8. The array functions switch once per call to the fixed degree
-// (src/arch/array_kernels.hpp); batch users can do the same.
-template <class Arch, int kDegree = -1>
+// at degree 8. kFinish other than `any` fixes the finish (it must equal
+// lobe_finish<Arch>(kernel)): a span of one batch then tests no flag. The array functions
+// switch once per call to the fixed degree and finish (src/arch/array_kernels.hpp); batch
+// users can do the same.
+template <class Arch, int kDegree = -1, LobeFinish kFinish = LobeFinish::any>
 class PreparedLobe {
  public:
   using F = floats<Arch>;
@@ -49,8 +62,8 @@ class PreparedLobe {
   // Broadcasts only the coefficients the degree uses: a small span pays for nothing else.
   explicit PreparedLobe(const LobeKernel& kernel)
       : kernel_(kernel), t_cut_(kernel.t_cut), center_(kernel.center_t), scale_(kernel.scale_f),
-        scale_lo_(kernel.scale_lo), split_scale_(kernel.scale_lo != 0),
-        compensated_(has_fused_fma<Arch> && kernel.compensated) {
+        finish_(kFinish == LobeFinish::any ? lobe_finish<Arch>(kernel) : kFinish) {
+    if (finish() != LobeFinish::plain) scale_lo_ = F(kernel.scale_lo);
     const int degree = kDegree >= 0 ? kDegree : kernel.degree;
     for (int i = 0; i <= degree && i <= LobeKernel::kMaxDegree; ++i) q_[i] = F(kernel.q_f[i]);
   }
@@ -83,9 +96,12 @@ class PreparedLobe {
       r = q_[degree];
       for (int i = degree; i-- > 1;) r = mul_add(r, s, q_[i]);
     }
-    if (compensated_) return compensated_cut_at(t, w, s, r);
+    if constexpr (has_fused_fma<Arch>)
+      if (finish() == LobeFinish::compensated) return compensated_cut_at(t, w, s, r);
     return cut_at(t, w, mul_add(r, s, q_[0]));
   }
+
+  LobeFinish finish() const { return kFinish == LobeFinish::any ? finish_ : kFinish; }
 
   // scale_f + (scale_lo - w q_lo - w q_hi), q_hi + q_lo = q_0 + s r (exact but for q_lo's
   // one rounding), where t > t_cut (or t is NaN), else 0.
@@ -102,11 +118,13 @@ class PreparedLobe {
 #if XSIMD_WITH_AVX512F
     if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
       const __mmask16 above = _mm512_cmp_ps_mask(t, t_cut_, _CMP_NLE_UQ);
-      if (split_scale_) return _mm512_maskz_add_ps(above, scale_, neg_mul_add(w, q, scale_lo_));
+      if (finish() == LobeFinish::split)
+        return _mm512_maskz_add_ps(above, scale_, neg_mul_add(w, q, scale_lo_));
       return _mm512_maskz_fnmadd_ps(above, w, q, scale_);
     }
 #endif
-    const F value = split_scale_ ? scale_ + neg_mul_add(w, q, scale_lo_) : neg_mul_add(w, q, scale_);
+    const F value = finish() == LobeFinish::split ? scale_ + neg_mul_add(w, q, scale_lo_)
+                                                  : neg_mul_add(w, q, scale_);
     return xsimd::select(t <= t_cut_, F(0.0f), value);
   }
 
@@ -123,8 +141,8 @@ class PreparedLobe {
   }
 
   const LobeKernel& kernel_;
-  F t_cut_, center_, scale_, scale_lo_;
-  bool split_scale_, compensated_;
+  F t_cut_, center_, scale_, scale_lo_;  // scale_lo_ set unless the finish is plain
+  LobeFinish finish_;
   std::array<F, (kDegree >= 0 ? kDegree : LobeKernel::kMaxDegree) + 1> q_;  // [0, degree] set
 };
 
