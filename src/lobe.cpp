@@ -90,7 +90,6 @@ class QuotientSeries {
   double floor_ = 0;
 };
 
-
 // Multiplications of B^k by squaring (k = 5: B^2, B^4, B^4 B).
 int power_cost(int k) { return std::bit_width(unsigned(k)) + std::popcount(unsigned(k)) - 2; }
 
@@ -138,15 +137,16 @@ std::optional<LobeKernel> fit_polynomial(LobeKernel kernel, QuotientSeries& seri
       }
       // The scale whole, else split (scale_f + (scale_lo - w q): one more rounding, of a term
       // smaller than the output, against scale_f's whole rounding error in a lower binade).
+      // The last form tried at a degree may be run over the epicenter (plain FMA kernels).
       const bool split = arithmetic != Arithmetic::scalar && (compensated || scale_lo != 0);
-      kernel.scale_lo = 0;
-      if (!compensated && meets(kernel, arithmetic, fit, scale, profile, target, nullptr))
-        return kernel;
-      kernel.scale_lo = scale_lo;
       QuotientSeries* series_to_run =
           !compensated && arithmetic == Arithmetic::fused ? &series : nullptr;
-      if ((split || series_to_run) &&
-          meets(kernel, arithmetic, fit, scale, profile, target, series_to_run))
+      kernel.scale_lo = 0;
+      if (!compensated &&
+          meets(kernel, arithmetic, fit, scale, profile, target, split ? nullptr : series_to_run))
+        return kernel;
+      kernel.scale_lo = scale_lo;
+      if (split && meets(kernel, arithmetic, fit, scale, profile, target, series_to_run))
         return kernel;
       // Once the fit's own error is negligible, a higher degree only adds roundings.
       if (series.truncation_error(degree) * w_max < 0x1p-8 * target.abs_error) break;
