@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <bit>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "arch/kernel_table.hpp"
@@ -41,7 +41,8 @@ std::optional<double> measured_epicenter_ulp(const LobeKernel& kernel,
   for (int i = 0; i <= degree; ++i) c[i] = double(scale * reference.monomials[i]);
   const double sigma = 1.0 - double(kernel.center_t);  // |s| <= 1 - center_t on the epicenter
   double absolute_sum = 0, sigma_power = 1;
-  for (int i = 0; i <= degree; ++i, sigma_power *= sigma) absolute_sum += std::fabs(c[i]) * sigma_power;
+  for (int i = 0; i <= degree; ++i, sigma_power *= sigma)
+    absolute_sum += std::fabs(c[i]) * sigma_power;
   const double reference_error = w_epicenter * (scale * reference.approximation_error +
                                                 (2 * degree + 3) * kDoubleUnit * absolute_sum) +
                                  2 * kDoubleUnit * scale;

@@ -254,7 +254,8 @@ TEST(Lobe, ExtremeParametersStillMeetThePreciseBound) {
 TEST(EpicenterCheck, MeasuresWhatAnIndependentSweepMeasures) {
   const detail::LobeArrayKernels* fused = detail::fused_lobe_array_kernels();
   if (!fused) GTEST_SKIP() << "no FMA arch on this CPU";
-  for (const LobeCase& c : {LobeCase{1000, 3, 0.5}, LobeCase{1000, 5, 0.5}, LobeCase{4000, 2, 0.3}}) {
+  for (const LobeCase& c :
+       {LobeCase{1000, 3, 0.5}, LobeCase{1000, 5, 0.5}, LobeCase{4000, 2, 0.3}}) {
     const Lobe lobe(c.n, c.k, c.Q);
     const double scale = lobe.coef_exact();
     const double w_max = 2 * std::pow(std::sin(0.5 * std::min(lobe.cutoff_angle(), M_PI / 2)), 2);

@@ -91,8 +91,9 @@ inline void map_arrays(const Kernel& kernel, const float* const (&inputs)[Inputs
 }
 
 // The lobe over an array: the polynomial form with its degree as a template argument (unrolled,
-// coefficients in registers), the base_power form generic. The table holds one per degree, so
-// that a call picks its loop with one index and no further dispatch.
+// coefficients in registers) and its finish fixed, the base_power form generic. The table holds
+// one per degree and finish, so that a call picks its loop by the slot its Lobe computed at
+// setup, with no further dispatch.
 template <class Arch, int kDegree, simd::LobeFinish kFinish = simd::LobeFinish::any>
 void kutlog_lobe_array(const LobeKernel& kernel, const float* t, float* out, std::size_t count) {
   map_arrays<Arch, 1>(simd::PreparedLobe<Arch, kDegree, kFinish>(kernel), {t}, out, count, 1.0f);
