@@ -95,21 +95,48 @@ int power_cost(int k) { return std::bit_width(unsigned(k)) + std::popcount(unsig
 
 // Whether a kernel meets the target: by its certified bound or, for a fused kernel (one
 // whose bound met the absolute promise and missed the epicenter's by at most twice), by
-// running it on every float of the epicenter (src/epicenter_check.hpp).
-bool meets(const LobeKernel& kernel, Arithmetic arithmetic, const detail::QuotientFit& fit,
-           double scale, const detail::LobeProfile& profile, const Target& target,
-           QuotientSeries* series_to_run) {
+// running it on every float of the epicenter (src/epicenter_check.hpp). If it does, its
+// certified bound.
+std::optional<detail::CertifiedError> meets(const LobeKernel& kernel, Arithmetic arithmetic,
+                                            const detail::QuotientFit& fit, double scale,
+                                            const detail::LobeProfile& profile,
+                                            const Target& target, QuotientSeries* series_to_run) {
   const Target limit{target.abs_error, (series_to_run ? 2 : 1) * target.epicenter_ulp};
   const detail::CertifiedError certified =
       detail::certified_error(kernel, arithmetic, fit, scale, profile, limit);
   if (certified.abs_error > target.abs_error || certified.epicenter_ulp > limit.epicenter_ulp)
-    return false;
-  if (certified.epicenter_ulp <= target.epicenter_ulp) return true;
+    return std::nullopt;
+  if (certified.epicenter_ulp <= target.epicenter_ulp) return certified;
   const std::optional<detail::QuotientFit> reference = series_to_run->reference_fit();
-  if (!reference) return false;
+  if (!reference) return std::nullopt;
   const std::optional<double> measured =
       detail::measured_epicenter_ulp(kernel, *reference, scale, profile.w_epicenter);
-  return measured && *measured <= target.epicenter_ulp;
+  if (measured && *measured <= target.epicenter_ulp) return certified;
+  return std::nullopt;
+}
+
+// Drops a float polynomial kernel's clamp to [0, scale_f] where its certified bound proves the
+// output within without it (LobeKernel::clamped), raising its cut as that proof needs.
+//   Peak: w = 1 - min(t, 1) >= 0 and a computed q >= 0 make w q >= 0, so scale_f - w q rounds
+//   to at most scale_f, and scale_lo - w q to at most scale_lo, then scale_f + (.) to at most
+//   scale_f + scale_lo rounded, which must be scale_f.
+//   Zero: the output is within E scale of scale F, so it is >= 0 where F >= E. The cut moves
+//   up to the last float where F < E (1 + 2^-16) (the margin outweighs this computation's
+//   roundings), at most the promise: there 0 is within it.
+void drop_clamp_if_proven(LobeKernel& kernel, const detail::CertifiedError& certified,
+                          const detail::LobeShape& shape, const Target& target) {
+  const double zero_limit = certified.abs_error * (1 + 0x1p-16);
+  // scale_f + scale_lo is exact in double.
+  if (kernel.compensated || !(certified.lowest_q > 0) ||
+      float(double(kernel.scale_f) + double(kernel.scale_lo)) != kernel.scale_f ||
+      zero_limit * (1 + 0x1p-16) > target.abs_error)
+    return;
+  const double angle = std::acos(std::pow(zero_limit, 1.0 / shape.k)) / shape.c;  // F = limit
+  if (angle < kPi / 2) {
+    const double half_sine = std::sin(0.5 * angle);
+    kernel.t_cut = std::max(kernel.t_cut, detail::float_at_or_below_cut(1 - 2 * half_sine * half_sine));
+  }
+  kernel.clamped = false;
 }
 
 // F = scale - w q(s), q in powers of s = center_t - t, the distance to the cut-off
@@ -118,7 +145,8 @@ bool meets(const LobeKernel& kernel, Arithmetic arithmetic, const detail::Quotie
 // there. The lowest degree that meets the target, if one does: first in the plain form (one
 // multiply-add per degree), its bound certified or, with FMA, its epicenter run; else, with
 // FMA, in the compensated form, about ten operations more.
-std::optional<LobeKernel> fit_polynomial(LobeKernel kernel, QuotientSeries& series, double w_max,
+std::optional<LobeKernel> fit_polynomial(LobeKernel kernel, QuotientSeries& series,
+                                         const detail::LobeShape& shape, double w_max,
                                          double scale, const detail::LobeProfile& profile,
                                          const Target& target, Arithmetic arithmetic) {
   kernel.form = LobeKernel::Form::polynomial;
@@ -137,17 +165,23 @@ std::optional<LobeKernel> fit_polynomial(LobeKernel kernel, QuotientSeries& seri
       }
       // The scale whole, else split (scale_f + (scale_lo - w q): one more rounding, of a term
       // smaller than the output, against scale_f's whole rounding error in a lower binade).
-      // The last form tried at a degree may be run over the epicenter (plain FMA kernels).
+      // FMA kernels of either may be run over the epicenter: the whole scale saves an add
+      // per batch (n = 1000, k = 3, normalized: 15 % on AVX2), worth a second run.
       const bool split = arithmetic != Arithmetic::scalar && (compensated || scale_lo != 0);
       QuotientSeries* series_to_run =
           !compensated && arithmetic == Arithmetic::fused ? &series : nullptr;
       kernel.scale_lo = 0;
-      if (!compensated &&
-          meets(kernel, arithmetic, fit, scale, profile, target, split ? nullptr : series_to_run))
+      std::optional<detail::CertifiedError> certified;
+      if (!compensated)
+        certified = meets(kernel, arithmetic, fit, scale, profile, target, series_to_run);
+      if (!certified && split) {
+        kernel.scale_lo = scale_lo;
+        certified = meets(kernel, arithmetic, fit, scale, profile, target, series_to_run);
+      }
+      if (certified) {
+        if (arithmetic != Arithmetic::scalar) drop_clamp_if_proven(kernel, *certified, shape, target);
         return kernel;
-      kernel.scale_lo = scale_lo;
-      if (split && meets(kernel, arithmetic, fit, scale, profile, target, series_to_run))
-        return kernel;
+      }
       // Once the fit's own error is negligible, a higher degree only adds roundings.
       if (series.truncation_error(degree) * w_max < 0x1p-8 * target.abs_error) break;
     }
@@ -176,7 +210,8 @@ std::optional<LobeKernel> fit_base_power(LobeKernel kernel, QuotientSeries& seri
 // The kernel for one variant and one arithmetic: in SIMD lanes the polynomial form if it
 // meets the target (float lanes, fastest), else base_power (double lanes); in the scalar
 // path, both in double, whichever takes fewer operations.
-LobeKernel fit_kernel(const ref::KutlogLobe& reference, QuotientSeries& polynomial_series,
+LobeKernel fit_kernel(const ref::KutlogLobe& reference, const detail::LobeShape& shape,
+                      QuotientSeries& polynomial_series,
                       const std::function<QuotientSeries&()>& base_series, double w_max,
                       double scale, const detail::LobeProfile& profile, const Target& target,
                       Arithmetic arithmetic) {
@@ -193,7 +228,7 @@ LobeKernel fit_kernel(const ref::KutlogLobe& reference, QuotientSeries& polynomi
   // and overflows float (and 0 * inf at t = 1 is NaN).
   if (kernel.t_cut == std::nextafter(1.0f, 0.0f)) return kernel;
   const std::optional<LobeKernel> polynomial =
-      fit_polynomial(kernel, polynomial_series, w_max, scale, profile, target, arithmetic);
+      fit_polynomial(kernel, polynomial_series, shape, w_max, scale, profile, target, arithmetic);
   // Beyond the same Horner steps and 1 - w q, the base costs the power, the scale and a
   // switch on k (measured: k = 3 runs faster as a polynomial of degree 6 than as a base of
   // degree 3, k = 5 slower as a polynomial of degree 8).
@@ -238,7 +273,7 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
         if (normalization == Normalization::exact_coef && !coef_fits_float_) continue;
         const Target& target = variant == Variant::fast ? kFastTarget : kPreciseTarget;
         const int index = kernel_index(variant, normalization, arithmetic);
-        kernels_[index] = fit_kernel(reference, polynomial_series, base_series, w_max,
+        kernels_[index] = fit_kernel(reference, shape, polynomial_series, base_series, w_max,
                                      normalization == Normalization::exact_coef ? coef_exact_ : 1.0,
                                      profile, target, arithmetic);
         array_slots_[index] = std::uint8_t(detail::LobeArrayKernels::slot_of(kernels_[index]));

@@ -47,6 +47,7 @@ using Coefficients = std::array<double, LobeKernel::kMaxDegree + 1>;
 
 struct HornerBound {
   double magnitude, error;
+  double lowest;  // of the exact value
 };
 HornerBound horner_bound(const Coefficients& c, int degree, Interval x, Rounding round,
                          bool product_rounded) {
@@ -60,7 +61,7 @@ HornerBound horner_bound(const Coefficients& c, int degree, Interval x, Rounding
     partial = {product.lo + c[i], product.hi + c[i]};
     error = before_sum + round(partial.magnitude() + before_sum);
   }
-  return {partial.magnitude(), error};
+  return {partial.magnitude(), error, partial.lo};
 }
 
 }  // namespace
@@ -120,7 +121,7 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
   // Clamping to scale_f moves an output by at most the distance of scale_f below scale.
   const double clamp_error = std::max(0.0, scale - double(kernel.scale_f));
 
-  CertifiedError worst{0, 0};
+  CertifiedError worst{0, 0, INFINITY};
   for (std::size_t j = 0; j + 1 < profile.w.size(); ++j) {
     const double w_hi = profile.w[j + 1];
     // The variable's range on the piece (widened by its rounding, if rounded).
@@ -140,6 +141,10 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
     // A rounded s moves p(s) by at most sum |c_i| sigma^i ((1 + unit)^i - 1).
     const double input_error = s_rounded ? 1.001 * unit * slope : 0;
     double evaluation_error = horner.error, q_magnitude = horner.magnitude + horner.error;
+    // The exact partial sums' intervals are computed in double, off by a few of its units.
+    if (polynomial && float_lanes && !compensated)
+      worst.lowest_q = std::min(worst.lowest_q, horner.lowest - horner.error - input_error -
+                                                    0x1p-40 * horner.magnitude);
     double lo_magnitude = 0;  // of q_lo, compensated
     if (compensated) {
       // s r = hi + lo exactly (two_product), c_0 + hi = q_hi + e exactly (two_sum),
@@ -185,6 +190,7 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
     }
     if (worst.abs_error > limit.abs_error || worst.epicenter_ulp > limit.epicenter_ulp) break;
   }
+  if (!polynomial || !float_lanes || compensated) worst.lowest_q = -INFINITY;
   return worst;
 }
 

@@ -56,10 +56,13 @@ struct QuotientFit {
 };
 
 // The worst errors of a kernel over the support, in the units of the contract: |out - scale F|
-// relative to scale, and in ulps of the float scale F where F >= 0.6 (0 if no such t).
+// relative to scale, and in ulps of the float scale F where F >= 0.6 (0 if no such t). For
+// the polynomial form in float lanes, not compensated: a lower bound on the q the kernel
+// computes, over the support (what src/lobe.cpp needs to drop the clamp at the peak).
 struct CertifiedError {
   double abs_error;
   double epicenter_ulp;
+  double lowest_q = -INFINITY;
 };
 
 // kernel: a kernel of either form, its coefficients set from fit.monomials (times scale in

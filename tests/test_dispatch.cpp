@@ -20,6 +20,7 @@
 #include "kutlog/accuracy.hpp"
 #include "kutlog/dispatch.hpp"
 #include "kutlog/math.hpp"
+#include "forced_arch_run.hpp"
 
 namespace kutlog {
 namespace {

@@ -247,6 +247,82 @@ TEST(Lobe, ExtremeParametersStillMeetThePreciseBound) {
   }
 }
 
+// What the setup's checks need of a lobe: its support 1 - cos(min(gran, pi/2)), its profile,
+// and the exact q = (1 - F) / w as a fit in powers of s = center_t - t, to long double (as
+// close as its series measured: series_error).
+struct LobeSetup {
+  double w_max;
+  detail::LobeShape shape;
+  detail::LobeProfile profile;
+  detail::QuotientFit reference;
+  double series_error;
+};
+LobeSetup lobe_setup(const Lobe& lobe, float center_t) {
+  const double w_max = 2 * std::pow(std::sin(0.5 * std::min(lobe.cutoff_angle(), M_PI / 2)), 2);
+  const detail::LobeShape shape{lobe.c(), lobe.k()};
+  const auto q = [&](detail::Real w) {  // at w = 0, its limit
+    w = std::max(w, detail::Real(0x1p-60) * w_max);
+    return detail::Real(shape.one_minus_power(double(w), lobe.k())) / w;
+  };
+  const detail::ChebyshevSeries series = detail::chebyshev_series(q, 0, w_max, 0x1p-50, 512);
+  const detail::Real center = 1 - detail::Real(center_t);
+  return {w_max, shape, detail::lobe_profile(shape, w_max),
+          {series.monomials(int(series.coefficients.size()) - 1, center), 0x1p-46 * double(q(0))},
+          series.measured_error};
+}
+
+// The setup drops a float kernel's clamp at the peak only where its certified bound proves
+// every q the kernel computes >= 0 (src/lobe.cpp): that bound must lie below the smallest q
+// the kernel's float arithmetic computes (emulated here, fused or not) on every float of the
+// support's two ends and on 2^20 floats between. The lobes the benchmarks run (n = 1000) must
+// then run without the clamp, every float kernel but compensated ones.
+TEST(LobeClamp, LowestComputedQIsBoundedAndBenchmarkLobesRunUnclamped) {
+  for (const LobeCase& c : {LobeCase{1000, 1, 0.5}, LobeCase{1000, 3, 0.5}, LobeCase{1000, 5, 0.5},
+                            LobeCase{2, 1, 0.1}, LobeCase{10, 5, 0.9}, LobeCase{1e4, 4, 0.3}}) {
+    const Lobe lobe(c.n, c.k, c.Q);
+    for (Variant variant : tools::kLobeVariants)
+      for (Normalization normalization : tools::kLobeNormalizations)
+        for (Arithmetic arithmetic : {Arithmetic::unfused, Arithmetic::fused}) {
+          const LobeKernel& kernel = lobe.kernel(variant, normalization, arithmetic);
+          const std::string name = testing::PrintToString(c) + " variant " +
+                                   std::to_string(int(variant)) + " normalization " +
+                                   std::to_string(int(normalization)) + " arithmetic " +
+                                   std::to_string(int(arithmetic));
+          if (kernel.form != LobeKernel::Form::polynomial || kernel.compensated) continue;
+          // (lowest_q depends on the kernel's coefficients, not on how exact the reference is)
+          const LobeSetup setup = lobe_setup(lobe, kernel.center_t);
+          const double scale = normalization == Normalization::none ? 1.0 : lobe.coef_exact();
+          const double lowest = detail::certified_error(kernel, arithmetic, setup.reference, scale,
+                                                        setup.profile).lowest_q;
+          const auto computed_q = [&](float t) {
+            const float s = kernel.center_t - std::min(1.0f, t);
+            float q = kernel.q_f[kernel.degree];
+            for (int i = kernel.degree; i-- > 0;) {
+              if (arithmetic == Arithmetic::fused) {
+                q = std::fma(q, s, kernel.q_f[i]);
+              } else {
+                const float product = float(double(q) * double(s));  // exact, then rounded
+                q = product + kernel.q_f[i];
+              }
+            }
+            return q;
+          };
+          const std::uint32_t first = tools::order_key(kernel.t_cut) + 1,
+                              last = tools::order_key(1.0f);
+          const std::uint32_t stride = std::max<std::uint32_t>(1, (last - first) >> 20);
+          float smallest = INFINITY;
+          for (std::uint32_t key = first; key <= last; ++key) {
+            if (key - first >= 1 << 16 && last - key >= 1 << 16 && (key - first) % stride != 0)
+              continue;
+            smallest = std::min(smallest, computed_q(tools::float_of_order_key(key)));
+          }
+          EXPECT_LE(lowest, smallest) << name;
+          EXPECT_GT(lowest, 0.0) << name;
+          if (c.n == 1000) EXPECT_FALSE(kernel.clamped) << name;
+        }
+  }
+}
+
 // The setup accepts an FMA kernel whose certified bound misses the epicenter's 2 ulps when
 // src/epicenter_check.hpp, run on every float of the epicenter, measures it within them. The
 // check must measure what an independent sweep measures (against cos^k(c acos t) in long
@@ -258,21 +334,11 @@ TEST(EpicenterCheck, MeasuresWhatAnIndependentSweepMeasures) {
        {LobeCase{1000, 3, 0.5}, LobeCase{1000, 5, 0.5}, LobeCase{4000, 2, 0.3}}) {
     const Lobe lobe(c.n, c.k, c.Q);
     const double scale = lobe.coef_exact();
-    const double w_max = 2 * std::pow(std::sin(0.5 * std::min(lobe.cutoff_angle(), M_PI / 2)), 2);
-    const detail::LobeShape shape{lobe.c(), lobe.k()};
-    const double w_epicenter = detail::lobe_profile(shape, w_max).w_epicenter;
     LobeKernel kernel = lobe.kernel(Variant::precise, Normalization::exact_coef, Arithmetic::fused);
-    // The reference fit: q = (1 - F) / w in powers of s = center_t - t, to long double.
-    const auto q = [&](detail::Real w) {  // at w = 0, its limit
-      w = std::max(w, detail::Real(0x1p-60) * w_max);
-      return detail::Real(shape.one_minus_power(double(w), lobe.k())) / w;
-    };
-    const detail::ChebyshevSeries series = detail::chebyshev_series(q, 0, w_max, 0x1p-50, 512);
-    ASSERT_LE(series.measured_error, 0x1p-48);
-    const detail::Real center = 1 - detail::Real(kernel.center_t);
-    const detail::QuotientFit reference{
-        series.monomials(int(series.coefficients.size()) - 1, center),
-        0x1p-46 * double(q(0))};
+    const LobeSetup setup = lobe_setup(lobe, kernel.center_t);
+    ASSERT_LE(setup.series_error, 0x1p-48);
+    const double w_epicenter = setup.profile.w_epicenter;
+    const detail::QuotientFit& reference = setup.reference;
 
     // The independent sweep: every float t from 1 down while F >= 0.6.
     const auto sweep = [&](const LobeKernel& run) {

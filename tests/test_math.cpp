@@ -17,6 +17,7 @@
 #include "kutlog/accuracy.hpp"
 #include "kutlog/dispatch.hpp"
 #include "kutlog/math.hpp"
+#include "forced_arch_run.hpp"
 #include "test_archs.hpp"
 
 namespace kutlog {

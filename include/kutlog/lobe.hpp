@@ -79,6 +79,12 @@ struct LobeKernel {
   // Its rounding, about one ulp of q, is what keeps a normalized lobe's epicenter from a
   // certified 2 ULP when its output sits a binade below the peak.
   bool compensated = false;
+  // SIMD polynomial form: whether the output is clamped to [0, scale_f]. The setup drops the
+  // clamp (two of about fifteen operations) where it proves the output within without it:
+  // q computed >= 0 keeps scale - w q at most the peak, and t_cut is raised to the last float
+  // where F is below the kernel's certified error, past which the output cannot be negative
+  // (at or below it, 0 is within the promise).
+  bool clamped = true;
   double scale_d = 1;
   std::array<float, kMaxDegree + 1> q_f{};   // SIMD polynomial form, times scale
   std::array<double, kMaxDegree + 1> q_d{};  // base_power form; scalar: both forms, times scale

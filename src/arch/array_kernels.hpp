@@ -94,9 +94,11 @@ inline void map_arrays(const Kernel& kernel, const float* const (&inputs)[Inputs
 // coefficients in registers) and its finish fixed, the base_power form generic. The table holds
 // one per degree and finish, so that a call picks its loop by the slot its Lobe computed at
 // setup, with no further dispatch.
-template <class Arch, int kDegree, simd::LobeFinish kFinish = simd::LobeFinish::any>
+template <class Arch, int kDegree, simd::LobeFinish kFinish = simd::LobeFinish::any,
+          bool kClamped = true>
 void kutlog_lobe_array(const LobeKernel& kernel, const float* t, float* out, std::size_t count) {
-  map_arrays<Arch, 1>(simd::PreparedLobe<Arch, kDegree, kFinish>(kernel), {t}, out, count, 1.0f);
+  map_arrays<Arch, 1>(simd::PreparedLobe<Arch, kDegree, kFinish, kClamped>(kernel), {t}, out,
+                      count, 1.0f);
 }
 template <class Arch>
 constexpr LobeArrayKernels lobe_array_kernels() {
@@ -106,9 +108,14 @@ constexpr LobeArrayKernels lobe_array_kernels() {
       simd::has_fused_fma<Arch> ? LobeFinish::compensated : LobeFinish::split;
   LobeArrayKernels kernels{};
   [&]<int... degree>(std::integer_sequence<int, degree...>) {
-    ((kernels.by_slot[3 * degree] = &kutlog_lobe_array<Arch, degree, LobeFinish::plain>,
-      kernels.by_slot[3 * degree + 1] = &kutlog_lobe_array<Arch, degree, LobeFinish::split>,
-      kernels.by_slot[3 * degree + 2] = &kutlog_lobe_array<Arch, degree, kCompensated>),
+    constexpr int kPer = LobeArrayKernels::kSlotsPerDegree;
+    ((kernels.by_slot[kPer * degree] = &kutlog_lobe_array<Arch, degree, LobeFinish::plain>,
+      kernels.by_slot[kPer * degree + 1] = &kutlog_lobe_array<Arch, degree, LobeFinish::split>,
+      kernels.by_slot[kPer * degree + 2] = &kutlog_lobe_array<Arch, degree, kCompensated>,
+      kernels.by_slot[kPer * degree + 3] =
+          &kutlog_lobe_array<Arch, degree, LobeFinish::plain, false>,
+      kernels.by_slot[kPer * degree + 4] =
+          &kutlog_lobe_array<Arch, degree, LobeFinish::split, false>),
      ...);
   }(std::make_integer_sequence<int, LobeArrayKernels::kMaxUnrolledDegree + 1>());
   kernels.by_slot[LobeArrayKernels::kSlots - 1] = &kutlog_lobe_array<Arch, -1>;

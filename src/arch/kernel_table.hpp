@@ -16,18 +16,21 @@ using BinaryScalarArrayKernel = void (*)(const float*, float, float*, std::size_
 
 using LobeArrayKernel = void (*)(const LobeKernel&, const float*, float*, std::size_t);
 // The lobe's array loops, by slot: for the polynomial form of each degree up to
-// kMaxUnrolledDegree, one per finish (plain, split, compensated: simd::LobeFinish), unrolled
-// and testing no flag; in the last slot, one for any kernel. A Lobe computes its kernels'
-// slots at setup, so that a call picks its loop with one load. (FMA-less archs are never
-// given a compensated kernel: Lobe keeps those for Arithmetic::fused.)
+// kMaxUnrolledDegree, one per finish (plain, split, compensated: simd::LobeFinish), then
+// plain and split without the clamp (LobeKernel::clamped; compensated kernels keep it),
+// unrolled and testing no flag; in the last slot, one for any kernel. A Lobe computes its
+// kernels' slots at setup, so that a call picks its loop with one load. (FMA-less archs are
+// never given a compensated kernel: Lobe keeps those for Arithmetic::fused.)
 struct LobeArrayKernels {
   static constexpr int kMaxUnrolledDegree = 16;
-  static constexpr int kSlots = 3 * (kMaxUnrolledDegree + 1) + 1;
+  static constexpr int kSlotsPerDegree = 5;
+  static constexpr int kSlots = kSlotsPerDegree * (kMaxUnrolledDegree + 1) + 1;
   LobeArrayKernel by_slot[kSlots];
   static constexpr int slot_of(const LobeKernel& kernel) {
     if (kernel.form != LobeKernel::Form::polynomial || kernel.degree > kMaxUnrolledDegree)
       return kSlots - 1;
-    return 3 * kernel.degree + (kernel.compensated ? 2 : kernel.scale_lo != 0 ? 1 : 0);
+    const int finish = kernel.compensated ? 2 : kernel.scale_lo != 0 ? 1 : 0;
+    return kSlotsPerDegree * kernel.degree + (kernel.clamped || finish == 2 ? finish : 3 + finish);
   }
   LobeArrayKernel of(const LobeKernel& kernel) const { return by_slot[slot_of(kernel)]; }
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <mutex>
 #include <vector>
 
@@ -61,12 +62,27 @@ std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep, LobeEv
   struct Segment {
     std::uint32_t first, last, step;
   };
-  const std::vector<Segment> segments = {
+  std::vector<Segment> segments = {
       {first_key, cut_key, kBelowCutStride * sweep.support_stride},
       {cut_key - std::min(kBoundary, cut_key - first_key), cut_key, 1},
       {std::max(zero_key, first_key + kBoundary) - kBoundary, std::min(zero_key + kBoundary, cut_key), 1},
       {cut_key + 1, epicenter_key - 1, sweep.support_stride},
-      {epicenter_key, last_key, sweep.epicenter_stride}};
+      {epicenter_key, last_key, sweep.epicenter_stride},
+      // Every float of the support's two ends, where the output meets 0 and the peak.
+      {cut_key + 1, std::min(cut_key + kBoundary, last_key), 1},
+      {std::max(cut_key + 1, last_key - kBoundary), last_key, 1}};
+  // And about each SIMD kernel's own cut, raised where the setup dropped its clamp at 0.
+  constexpr std::uint32_t kKernelCutReach = 1 << 12;
+  for (Variant variant : kLobeVariants)
+    for (Normalization normalization : kLobeNormalizations)
+      for (Arithmetic arithmetic : {Arithmetic::unfused, Arithmetic::fused}) {
+        if (normalization == Normalization::exact_coef &&
+            !(lobe.coef_exact() <= std::numeric_limits<float>::max()))
+          continue;
+        const std::uint32_t key = order_key(lobe.kernel(variant, normalization, arithmetic).t_cut);
+        if (key > cut_key + kBoundary / 2)
+          segments.push_back({key - kKernelCutReach, std::min(key + kKernelCutReach, last_key), 1});
+      }
   // Tasks of up to 2^16 samples each.
   constexpr std::uint64_t kSamples = 1 << 16;
   std::vector<Segment> tasks;

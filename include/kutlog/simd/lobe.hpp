@@ -50,10 +50,11 @@ constexpr LobeFinish lobe_finish(const LobeKernel& kernel) {
 // kDegree >= 0 fixes the float form's degree (kernel.degree must equal it): Horner's rule is
 // then unrolled with the coefficients in registers, about twice as fast as the generic loop
 // at degree 8. kFinish other than `any` fixes the finish (it must equal
-// lobe_finish<Arch>(kernel)): a span of one batch then tests no flag. The array functions
-// switch once per call to the fixed degree and finish (src/arch/array_kernels.hpp); batch
-// users can do the same.
-template <class Arch, int kDegree = -1, LobeFinish kFinish = LobeFinish::any>
+// lobe_finish<Arch>(kernel)): a span of one batch then tests no flag. kClamped = false
+// leaves out the clamp to [0, scale_f], for a kernel whose setup proved it needless
+// (kernel.clamped false, polynomial form). The array functions switch once per call to the
+// fixed degree, finish and clamp (src/arch/array_kernels.hpp); batch users can do the same.
+template <class Arch, int kDegree = -1, LobeFinish kFinish = LobeFinish::any, bool kClamped = true>
 class PreparedLobe {
  public:
   using F = floats<Arch>;
@@ -69,9 +70,11 @@ class PreparedLobe {
   }
 
   // Within [0, scale]: the clamp costs two instructions and removes the rounding below 0
-  // near the cut-off and above the peak that the polynomial alone would let through.
+  // near the cut-off and above the peak that the polynomial alone may let through (where the
+  // setup proved it does not, kClamped = false runs without).
   // A fixed degree is the polynomial form's (the base_power form runs with kDegree = -1).
   F operator()(F t) const {
+    if constexpr (!kClamped) return float_form(t);
     if (kDegree >= 0 || kernel_.form == LobeKernel::Form::polynomial)
       return detail::clamp_zero_to(float_form(t), scale_);
     return xsimd::select(t <= t_cut_, F(0.0f), detail::clamp_zero_to(double_form(t), scale_));
