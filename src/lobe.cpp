@@ -55,6 +55,13 @@ class QuotientSeries {
       // the Lebesgue constant), and from the terms past the last, which the decay bounds.
       floor_ = double(0x1p-45L * total + 4 * last);
     }
+    // Each degree's truncation error, asked for many times: the sum of the dropped terms.
+    truncation_errors_.resize(chebyshev_.size());
+    Real tail = 0;
+    for (std::size_t degree = chebyshev_.size(); degree-- > 0;) {
+      truncation_errors_[degree] = double(tail) + floor_;
+      tail += std::fabs(chebyshev_[degree]);
+    }
   }
 
   // The fit of this degree with its bound, if the series converged.
@@ -66,9 +73,7 @@ class QuotientSeries {
     return detail::QuotientFit{monomials_[degree], truncation_error(degree)};
   }
   double truncation_error(int degree) const {
-    Real tail = 0;
-    for (std::size_t j = degree + 1; j < chebyshev_.size(); ++j) tail += std::fabs(chebyshev_[j]);
-    return double(tail) + floor_;
+    return std::size_t(degree) < truncation_errors_.size() ? truncation_errors_[degree] : floor_;
   }
   bool converged() const { return converged_; }
   // The fit of the lowest degree whose truncation is below 2^-40 of the peak (w_max q), or of
@@ -86,6 +91,7 @@ class QuotientSeries {
   Real center_;
   std::vector<Real> chebyshev_;
   std::vector<std::vector<Real>> monomials_;
+  std::vector<double> truncation_errors_;  // by degree
   bool converged_ = false;
   double floor_ = 0;
 };

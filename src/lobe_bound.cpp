@@ -34,9 +34,16 @@ struct Interval {
   double magnitude() const { return std::max(-lo, hi); }
 };
 Interval times(Interval a, Interval b) {
-  const double products[] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
-  return {*std::min_element(std::begin(products), std::end(products)),
-          *std::max_element(std::begin(products), std::end(products))};
+  const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
+  return {std::min(std::min(p1, p2), std::min(p3, p4)), std::max(std::max(p1, p2), std::max(p3, p4))};
+}
+
+// base^exponent by squaring (exponent >= 0): about 2 log2(exponent) roundings.
+double integer_power(double base, int exponent) {
+  double power = 1;
+  for (; exponent > 0; exponent >>= 1, base *= base)
+    if (exponent & 1) power *= base;
+  return power;
 }
 
 // Horner's rule for sum c_i x^i with x in an interval, each operation rounded: bounds on the
@@ -136,7 +143,7 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
     double coefficient_error = 0, slope = 0, sigma_power = 1;  // slope: sum i |c_i| sigma^i
     for (int i = 0; i <= degree; ++i, sigma_power *= sigma) {
       coefficient_error += rounding[i] * sigma_power;
-      slope += i * std::fabs(stored[i]) * sigma_power;
+      if (s_rounded) slope += i * std::fabs(stored[i]) * sigma_power;  // only then needed
     }
     // A rounded s moves p(s) by at most sum |c_i| sigma^i ((1 + unit)^i - 1).
     const double input_error = s_rounded ? 1.001 * unit * slope : 0;
@@ -175,8 +182,7 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
       const double w_q = w_hi * q_magnitude;
       const double base_error = w_hi * q_error + unit * (w_q + 1 + w_q);
       const double base_hi = profile.base[j] + base_error;
-      double power_hi = 1;  // base_hi^(k-1)
-      for (int e = 1; e < kernel.k; ++e) power_hi *= base_hi;
+      const double power_hi = integer_power(base_hi, kernel.k - 1);
       error = scale * (kernel.k * power_hi * base_error + 14 * unit * power_hi * base_hi) +
               unit * scale * power_hi * base_hi;
     }
