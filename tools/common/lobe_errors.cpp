@@ -58,6 +58,7 @@ std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep, LobeEv
   const std::uint32_t epicenter_key =
       std::max(cut_key + 1, order_key(std::nextafter(float(epicenter_edge(lobe)), -1.0f)));
   constexpr std::uint32_t kBoundary = 1 << 16, kBelowCutStride = 61;
+  const std::uint32_t end_reach = std::max<std::uint32_t>(kBoundary / sweep.support_stride, 1 << 10);
   // Segments of order keys [first, last] sampled every `step`.
   struct Segment {
     std::uint32_t first, last, step;
@@ -68,11 +69,14 @@ std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep, LobeEv
       {std::max(zero_key, first_key + kBoundary) - kBoundary, std::min(zero_key + kBoundary, cut_key), 1},
       {cut_key + 1, epicenter_key - 1, sweep.support_stride},
       {epicenter_key, last_key, sweep.epicenter_stride},
-      // Every float of the support's two ends, where the output meets 0 and the peak.
-      {cut_key + 1, std::min(cut_key + kBoundary, last_key), 1},
-      {std::max(cut_key + 1, last_key - kBoundary), last_key, 1}};
-  // And about each SIMD kernel's own cut, raised where the setup dropped its clamp at 0.
-  constexpr std::uint32_t kKernelCutReach = 1 << 12;
+      // Every float of the support's two ends, where the output meets 0 and the peak: 2^16
+      // of each in a sweep of every float, fewer in sparser ones (2^10 at least).
+      {cut_key + 1, std::min(cut_key + end_reach, last_key), 1},
+      {std::max(cut_key + 1, last_key - end_reach), last_key, 1}};
+  // And about each SIMD kernel's own cut, raised where the setup dropped its clamp at 0 (the
+  // negative outputs the clamp would remove sit within a few floats of where the cut goes).
+  const std::uint32_t kernel_cut_reach = std::min<std::uint32_t>(end_reach, 1 << 12);
+  std::vector<std::uint32_t> kernel_cuts;
   for (Variant variant : kLobeVariants)
     for (Normalization normalization : kLobeNormalizations)
       for (Arithmetic arithmetic : {Arithmetic::unfused, Arithmetic::fused}) {
@@ -80,8 +84,13 @@ std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep, LobeEv
             !(lobe.coef_exact() <= std::numeric_limits<float>::max()))
           continue;
         const std::uint32_t key = order_key(lobe.kernel(variant, normalization, arithmetic).t_cut);
-        if (key > cut_key + kBoundary / 2)
-          segments.push_back({key - kKernelCutReach, std::min(key + kKernelCutReach, last_key), 1});
+        const bool covered = key <= cut_key + end_reach / 2 ||
+                             std::any_of(kernel_cuts.begin(), kernel_cuts.end(), [&](std::uint32_t cut) {
+                               return std::max(key, cut) - std::min(key, cut) <= kernel_cut_reach / 2;
+                             });
+        if (covered) continue;
+        kernel_cuts.push_back(key);
+        segments.push_back({key - kernel_cut_reach, std::min(key + kernel_cut_reach, last_key), 1});
       }
   // Tasks of up to 2^16 samples each.
   constexpr std::uint64_t kSamples = 1 << 16;
