@@ -140,7 +140,8 @@ void drop_clamp_if_proven(LobeKernel& kernel, const detail::CertifiedError& cert
   const double angle = std::acos(std::pow(zero_limit, 1.0 / shape.k)) / shape.c;  // F = limit
   if (angle < kPi / 2) {
     const double half_sine = std::sin(0.5 * angle);
-    kernel.t_cut = std::max(kernel.t_cut, detail::float_at_or_below_cut(1 - 2 * half_sine * half_sine));
+    const float t_zero = detail::float_at_or_below_cut(1 - 2 * half_sine * half_sine);
+    kernel.t_cut = std::max(kernel.t_cut, t_zero);
   }
   kernel.clamped = false;
 }
@@ -185,7 +186,8 @@ std::optional<LobeKernel> fit_polynomial(LobeKernel kernel, QuotientSeries& seri
         certified = meets(kernel, arithmetic, fit, scale, profile, target, series_to_run);
       }
       if (certified) {
-        if (arithmetic != Arithmetic::scalar) drop_clamp_if_proven(kernel, *certified, shape, target);
+        if (arithmetic != Arithmetic::scalar)
+          drop_clamp_if_proven(kernel, *certified, shape, target);
         return kernel;
       }
       // Once the fit's own error is negligible, a higher degree only adds roundings.

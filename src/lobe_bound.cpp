@@ -35,7 +35,8 @@ struct Interval {
 };
 Interval times(Interval a, Interval b) {
   const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
-  return {std::min(std::min(p1, p2), std::min(p3, p4)), std::max(std::max(p1, p2), std::max(p3, p4))};
+  return {std::min(std::min(p1, p2), std::min(p3, p4)),
+          std::max(std::max(p1, p2), std::max(p3, p4))};
 }
 
 // base^exponent by squaring (exponent >= 0): about 2 log2(exponent) roundings.

@@ -58,7 +58,8 @@ std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep, LobeEv
   const std::uint32_t epicenter_key =
       std::max(cut_key + 1, order_key(std::nextafter(float(epicenter_edge(lobe)), -1.0f)));
   constexpr std::uint32_t kBoundary = 1 << 16, kBelowCutStride = 61;
-  const std::uint32_t end_reach = std::max<std::uint32_t>(kBoundary / sweep.support_stride, 1 << 10);
+  const std::uint32_t end_reach =
+      std::max<std::uint32_t>(kBoundary / sweep.support_stride, 1 << 10);
   // Segments of order keys [first, last] sampled every `step`.
   struct Segment {
     std::uint32_t first, last, step;
@@ -84,10 +85,11 @@ std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep, LobeEv
             !(lobe.coef_exact() <= std::numeric_limits<float>::max()))
           continue;
         const std::uint32_t key = order_key(lobe.kernel(variant, normalization, arithmetic).t_cut);
+        const auto near = [&](std::uint32_t cut) {
+          return std::max(key, cut) - std::min(key, cut) <= kernel_cut_reach / 2;
+        };
         const bool covered = key <= cut_key + end_reach / 2 ||
-                             std::any_of(kernel_cuts.begin(), kernel_cuts.end(), [&](std::uint32_t cut) {
-                               return std::max(key, cut) - std::min(key, cut) <= kernel_cut_reach / 2;
-                             });
+                             std::any_of(kernel_cuts.begin(), kernel_cuts.end(), near);
         if (covered) continue;
         kernel_cuts.push_back(key);
         segments.push_back({key - kernel_cut_reach, std::min(key + kernel_cut_reach, last_key), 1});
