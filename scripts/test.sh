@@ -8,7 +8,7 @@
 # UndefinedBehaviorSanitizer in build-sanitize and runs every test there
 # except the exhaustive sweeps (ctest -LE exhaustive: under ASan they would take hours; the
 # sanitize build does not even register them), the libFuzzer targets included: each replays
-# its committed corpus and crash inputs, then fuzzes for 60 seconds (KUTLOG_FUZZ_SECONDS).
+# its committed corpus and crash inputs, then fuzzes for 30 seconds (KUTLOG_FUZZ_SECONDS).
 # Quick subsets while you work: ctest --test-dir build -L quick, and under the sanitizers
 # ctest --test-dir build-sanitize -L sanitize (everything there but the minutes of fuzzing).
 set -euo pipefail
