@@ -129,7 +129,8 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
   // Clamping to scale_f moves an output by at most the distance of scale_f below scale.
   const double clamp_error = std::max(0.0, scale - double(kernel.scale_f));
 
-  CertifiedError worst{0, 0, INFINITY};
+  const bool bounds_q = polynomial && float_lanes && !compensated;  // lowest_q's kernels
+  CertifiedError worst{0, 0, bounds_q ? INFINITY : -INFINITY};
   for (std::size_t j = 0; j + 1 < profile.w.size(); ++j) {
     const double w_hi = profile.w[j + 1];
     // The variable's range on the piece (widened by its rounding, if rounded).
@@ -150,7 +151,7 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
     const double input_error = s_rounded ? 1.001 * unit * slope : 0;
     double evaluation_error = horner.error, q_magnitude = horner.magnitude + horner.error;
     // The exact partial sums' intervals are computed in double, off by a few of its units.
-    if (polynomial && float_lanes && !compensated)
+    if (bounds_q)
       worst.lowest_q = std::min(worst.lowest_q, horner.lowest - horner.error - input_error -
                                                     0x1p-40 * horner.magnitude);
     double lo_magnitude = 0;  // of q_lo, compensated
@@ -197,7 +198,6 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
     }
     if (worst.abs_error > limit.abs_error || worst.epicenter_ulp > limit.epicenter_ulp) break;
   }
-  if (!polynomial || !float_lanes || compensated) worst.lowest_q = -INFINITY;
   return worst;
 }
 
