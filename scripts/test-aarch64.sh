@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Cross-compiles kutlog for aarch64 (NEON, the neon64 arch) with Debian's g++-aarch64-linux-gnu
 # and runs its tests under qemu-aarch64 (cmake/aarch64-linux-gnu.cmake): every test, with the
-# exhaustive sweeps sampled (KUTLOG_SWEEP_SAMPLES, tests/CMakeLists.txt), and a consumer
+# exhaustive sweeps sampled (KUTLOG_SWEEP_SAMPLES) and the double reference's Monte Carlo and
+# quadrature grids on a few lobes (EMULATED_FILTER; both in tests/CMakeLists.txt), and a consumer
 # cross-compiled against the installed aarch64 package with find_package(kutlog), run under
 # qemu too (package.find_package_consumer.run: it must report neon64). The tools and the
 # benchmarks are not built (speed under emulation means nothing).

@@ -13,15 +13,26 @@
 # ctest --test-dir build-sanitize -L sanitize (everything there but the minutes of fuzzing).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Each stage's time, printed as it ends (CI must stay well under 90 minutes; this says where
+# they go).
+stage_start=$SECONDS
+stage_done() {
+  echo "kutlog-test: stage '$1' took $((SECONDS - stage_start)) s ($((SECONDS / 60)) min in all)"
+  stage_start=$SECONDS
+}
 bash scripts/setup-debian.sh
+stage_done packages
 bash scripts/build.sh
+stage_done "Release build"
 # Unoptimized, GCC reads other intrinsics (macros instead of functions) than at -O2: that once
 # broke the Debug build while every optimized one compiled (kutlog/simd/xsimd.hpp). Compiling
 # the library alone catches it in about 20 seconds.
 KUTLOG_BUILD_DIR=${KUTLOG_DEBUG_BUILD_DIR:-build-debug} bash scripts/build.sh \
   -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=g++ -DKUTLOG_TESTS=OFF -DKUTLOG_BENCH=OFF \
   -DKUTLOG_TOOLS=OFF
+stage_done "Debug build"
 ctest --test-dir "${KUTLOG_BUILD_DIR:-build}" -j "${KUTLOG_JOBS:-2}" --output-on-failure
+stage_done "Release tests"
 
 # The portable kernels alone, as on a CPU kutlog has no SIMD arch for (docs/design.md): built
 # without benchmarks and tools (which do not depend on the arch) in build-portable, its quick
@@ -30,15 +41,19 @@ portable_dir=${KUTLOG_PORTABLE_BUILD_DIR:-build-portable}
 KUTLOG_BUILD_DIR=$portable_dir bash scripts/build.sh -DKUTLOG_PORTABLE_ONLY=ON -DKUTLOG_BENCH=OFF \
   -DKUTLOG_TOOLS=OFF
 ctest --test-dir "$portable_dir" -L quick -j "${KUTLOG_JOBS:-2}" --output-on-failure
+stage_done portable
 
 # aarch64 (NEON) cross-compiled and run under qemu-aarch64. Before the sanitizers: a break of
 # the NEON port shows sooner, and the fuzzing statistics stay the last lines of the run.
 bash scripts/test-aarch64.sh
+stage_done aarch64
 
 sanitize_dir=${KUTLOG_SANITIZE_BUILD_DIR:-build-sanitize}
 KUTLOG_BUILD_DIR=$sanitize_dir bash scripts/build.sh -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_COMPILER=clang++-14 -DKUTLOG_SANITIZE=ON -DKUTLOG_FUZZ=ON
+stage_done "sanitize build"
 ctest --test-dir "$sanitize_dir" -LE exhaustive -j "${KUTLOG_JOBS:-2}" --output-on-failure
+stage_done "sanitize tests"
 # How much each target fuzzed, from libFuzzer's final statistics (-print_final_stats=1).
 awk '/ Test: fuzz\./ { target = $3 }
      /stat::number_of_executed_units/ { runs = $2 }
