@@ -5,17 +5,26 @@
 #include <cstddef>
 #include <cstdint>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace kutlog::bench {
 
 inline constexpr std::size_t kArrayLength = 4096;
+// The fragment benchmarks' other input count (bench/main.cpp): 2^18, more than a branch
+// predictor learns; their names carry it as /inputs:<count>.
+inline constexpr std::size_t kFragmentInputsUnlearned = std::size_t(1) << 18;
+inline std::string fragment_inputs_token(std::size_t count) {
+  return count == kArrayLength ? "" : "/inputs:" + std::to_string(count);
+}
 
-// kArrayLength values uniform in [lo, hi], the same for every benchmark that asks for them.
-inline std::vector<float> uniform_inputs(float lo, float hi, unsigned seed = 1) {
+// kArrayLength (or count) values uniform in [lo, hi], the same for every benchmark that asks
+// for them.
+inline std::vector<float> uniform_inputs(float lo, float hi, unsigned seed = 1,
+                                         std::size_t count = kArrayLength) {
   std::mt19937 engine(seed);
   std::uniform_real_distribution<float> distribution(lo, hi);
-  std::vector<float> values(kArrayLength);
+  std::vector<float> values(count);
   for (float& value : values) value = distribution(engine);
   return values;
 }

@@ -23,8 +23,8 @@ inline constexpr std::size_t kSpanCounts[] = {1, 16, 157, 4096};
 
 // t = N.H over the lobe and around it: uniform in [0.9, 1] for n = 1000's narrow lobe would
 // flatter it, so t is uniform in angle over [0, 2 gran] of the lobe at hand.
-inline std::vector<float> lobe_inputs(const Lobe& lobe) {
-  std::vector<float> angles = uniform_inputs(0, float(2 * lobe.cutoff_angle()));
+inline std::vector<float> lobe_inputs(const Lobe& lobe, std::size_t count = kArrayLength) {
+  std::vector<float> angles = uniform_inputs(0, float(2 * lobe.cutoff_angle()), 1, count);
   for (float& t : angles) t = std::cos(std::min(t, 1.5707963f));
   return angles;
 }

@@ -17,6 +17,7 @@
 #include <chrono>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <random>
 #include <utility>
 #include <string_view>
@@ -42,17 +43,22 @@ void register_math_benchmarks_for(Arch arch) {
   kRegister[static_cast<int>(arch)]();
 }
 
+// out[i] = function(x[i]) one call at a time: kArrayLength inputs in BenchArrays' block, more in
+// vectors of their own.
 template <class Function>
 void scalar_unary(benchmark::State& state, Function function, const std::vector<float>& inputs) {
-  BenchArrays arrays(inputs, inputs);
-  float* const x = arrays.x();
-  float* const out = arrays.out();
+  std::optional<BenchArrays> arrays;
+  std::vector<float> outputs;
+  if (inputs.size() == kArrayLength) arrays.emplace(inputs, inputs);
+  else outputs.resize(inputs.size());
+  const float* const x = arrays ? arrays->x() : inputs.data();
+  float* const out = arrays ? arrays->out() : outputs.data();
   for (auto _ : state) {
-    for (std::size_t i = 0; i < kArrayLength; ++i) out[i] = function(x[i]);
+    for (std::size_t i = 0; i < inputs.size(); ++i) out[i] = function(x[i]);
     benchmark::DoNotOptimize(out);
     benchmark::ClobberMemory();
   }
-  state.SetItemsProcessed(state.iterations() * std::int64_t(kArrayLength));
+  state.SetItemsProcessed(state.iterations() * std::int64_t(inputs.size()));
 }
 
 void register_scalar_benchmarks() {
@@ -64,20 +70,24 @@ void register_scalar_benchmarks() {
   add("math/exp/std/arch:scalar", [](float x) { return std::exp(x); }, uniform_inputs(-80, 80));
   add("math/log/std/arch:scalar", [](float x) { return std::log(x); }, uniform_inputs(1e-3f, 1e3f));
   add("math/pow/std/arch:scalar", [](float x) { return std::pow(x, 1000.0f); }, uniform_inputs(0, 1));
-  // One fragment at a time, as a fragment shader calls it: t = N.H over the lobe, n = 1000.
-  for (int k : {3, 5}) {
-    const auto lobe = std::make_shared<const Lobe>(1000, k, kLobeAnchor);
-    const std::string at = "/n:1000/k:" + std::to_string(k);
-    add(("fragment/scalar_kutlog" + at).c_str(), [lobe](float t) { return lobe->eval(t); },
-        lobe_inputs(*lobe));
-    add(("fragment/scalar_kutlog_fast" + at).c_str(),
-        [lobe](float t) { return lobe->eval(t, Variant::fast); }, lobe_inputs(*lobe));
-    add(("fragment/scalar_powf" + at).c_str(),
-        [](float t) { return powf(std::max(t, 0.0f), 1000.0f); }, lobe_inputs(*lobe));
-    add(("fragment/scalar_pow_double" + at).c_str(),
-        [](float t) { return float(std::pow(double(std::max(t, 0.0f)), 1000.0)); },
-        lobe_inputs(*lobe));
-  }
+  // One fragment at a time, as a fragment shader calls it: t = N.H over the lobe, n = 1000,
+  // half of it past the cut-off, where the scalar lobe branches out (kutlog/lobe.hpp). Over
+  // the 4096 inputs run again and again, the CPU's branch predictor learns part of which fall
+  // past it; over kFragmentInputsUnlearned (/inputs:<count>), in no order it can learn, each
+  // costs what a path tracer's random directions would.
+  for (std::size_t count : {kArrayLength, kFragmentInputsUnlearned})
+    for (int k : {3, 5}) {
+      const auto lobe = std::make_shared<const Lobe>(1000, k, kLobeAnchor);
+      const std::string at = "/n:1000/k:" + std::to_string(k) + fragment_inputs_token(count);
+      const std::vector<float> t = lobe_inputs(*lobe, count);
+      add(("fragment/scalar_kutlog" + at).c_str(), [lobe](float t) { return lobe->eval(t); }, t);
+      add(("fragment/scalar_kutlog_fast" + at).c_str(),
+          [lobe](float t) { return lobe->eval(t, Variant::fast); }, t);
+      add(("fragment/scalar_powf" + at).c_str(),
+          [](float t) { return powf(std::max(t, 0.0f), 1000.0f); }, t);
+      add(("fragment/scalar_pow_double" + at).c_str(),
+          [](float t) { return float(std::pow(double(std::max(t, 0.0f)), 1000.0)); }, t);
+    }
 }
 
 // Construction time of Lobe, PerLaneLobe and LobeSampler over 200 random materials (n

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "inputs.hpp"
 #include "kutlog/dispatch.hpp"
 
 namespace kutlog::bench {
@@ -98,21 +99,22 @@ bool RatioCollector::print_lobe_ratios(std::FILE* out) const {
 bool RatioCollector::print_call_shape_ratios(std::FILE* out) const {
   // Per fragment: ns per call of each fragment function, and kutlog's speed-up over each peer.
   bool printed = false;
-  for (int k : {3, 5}) {
-    const std::string at = "/n:1000/k:" + std::to_string(k);
-    const double kutlog = rate("fragment/scalar_kutlog" + at), fast = rate("fragment/scalar_kutlog_fast" + at);
-    const double powf = rate("fragment/scalar_powf" + at), pow_double = rate("fragment/scalar_pow_double" + at);
-    if (kutlog == 0 || powf == 0 || pow_double == 0) continue;
-    if (!printed)
-      std::fprintf(out,
-                   "\n| per fragment, n = 1000 | k | ns/call | powf / it | pow(double) / it |\n"
-                   "|---|---:|---:|---:|---:|\n");
-    printed = true;
-    for (auto [name, rate_of] : {std::pair{"scalar_kutlog", kutlog}, std::pair{"scalar_kutlog_fast", fast},
-                                 std::pair{"scalar_powf", powf}, std::pair{"scalar_pow_double", pow_double}})
-      std::fprintf(out, "| %s | %d | %.2f | %.2fx | %.2fx |\n", name, k, 1e9 / rate_of,
-                   rate_of / powf, rate_of / pow_double);
-  }
+  for (std::size_t count : {kArrayLength, kFragmentInputsUnlearned})
+    for (int k : {3, 5}) {
+      const std::string at = "/n:1000/k:" + std::to_string(k) + fragment_inputs_token(count);
+      const double kutlog = rate("fragment/scalar_kutlog" + at), fast = rate("fragment/scalar_kutlog_fast" + at);
+      const double powf = rate("fragment/scalar_powf" + at), pow_double = rate("fragment/scalar_pow_double" + at);
+      if (kutlog == 0 || powf == 0 || pow_double == 0) continue;
+      if (!printed)
+        std::fprintf(out,
+                     "\n| per fragment, n = 1000 | inputs | k | ns/call | powf / it | pow(double) / it |\n"
+                     "|---|---:|---:|---:|---:|---:|\n");
+      printed = true;
+      for (auto [name, rate_of] : {std::pair{"scalar_kutlog", kutlog}, std::pair{"scalar_kutlog_fast", fast},
+                                   std::pair{"scalar_powf", powf}, std::pair{"scalar_pow_double", pow_double}})
+        std::fprintf(out, "| %s | %zu | %d | %.2f | %.2fx | %.2fx |\n", name, count, k, 1e9 / rate_of,
+                     rate_of / powf, rate_of / pow_double);
+    }
   // Spans: ns per element of the array eval at each span length, and its cost over that of
   // a 4096 span.
   bool spans = false;
