@@ -79,14 +79,15 @@ void register_scalar_benchmarks() {
     for (int k : {3, 5}) {
       const auto lobe = std::make_shared<const Lobe>(1000, k, kLobeAnchor);
       const std::string at = "/n:1000/k:" + std::to_string(k) + fragment_inputs_token(count);
-      const std::vector<float> t = lobe_inputs(*lobe, count);
-      add(("fragment/scalar_kutlog" + at).c_str(), [lobe](float t) { return lobe->eval(t); }, t);
+      const std::vector<float> cosines = lobe_inputs(*lobe, count);
+      add(("fragment/scalar_kutlog" + at).c_str(),
+          [lobe](float t) { return lobe->eval(t); }, cosines);
       add(("fragment/scalar_kutlog_fast" + at).c_str(),
-          [lobe](float t) { return lobe->eval(t, Variant::fast); }, t);
+          [lobe](float t) { return lobe->eval(t, Variant::fast); }, cosines);
       add(("fragment/scalar_powf" + at).c_str(),
-          [](float t) { return powf(std::max(t, 0.0f), 1000.0f); }, t);
+          [](float t) { return powf(std::max(t, 0.0f), 1000.0f); }, cosines);
       add(("fragment/scalar_pow_double" + at).c_str(),
-          [](float t) { return float(std::pow(double(std::max(t, 0.0f)), 1000.0)); }, t);
+          [](float t) { return float(std::pow(double(std::max(t, 0.0f)), 1000.0)); }, cosines);
     }
 }
 

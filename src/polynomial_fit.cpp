@@ -33,8 +33,8 @@ constexpr int kResolution = 1024;
 Real cos_pi_times(int m, int denominator) {
   static const std::array<Real, kResolution / 2 + 1> quarter_wave = [] {
     std::array<Real, kResolution / 2 + 1> table;
-    for (int m = 0; m <= kResolution / 2; ++m)
-      table[m] = std::cos(std::numbers::pi_v<Real> * m / kResolution);
+    for (int entry = 0; entry <= kResolution / 2; ++entry)
+      table[entry] = std::cos(std::numbers::pi_v<Real> * entry / kResolution);
     return table;
   }();
   int r = m * (kResolution / denominator) % (2 * kResolution);

@@ -93,10 +93,10 @@ struct LobeKernel {
   // t > t_cut; finite elsewhere in [-1, 1], NaN for NaN). Always inlined, as evaluate: GCC
   // would call them for their size, and the call costs a fragment loop a fifth of its time.
   [[gnu::always_inline]] double unrounded(float t) const {
-    const double clamped = t < 1.0f ? double(t) : 1.0, w = 1.0 - clamped;  // NaN kept
+    const double t_capped = t < 1.0f ? double(t) : 1.0, w = 1.0 - t_capped;  // NaN kept
     if (form == Form::base_power)
       return with_q(w, [&](double q) { return scale_d * base_power(1.0 - w * q); });
-    return with_q(double(center_t) - clamped, [&](double q) { return scale_d - w * q; });
+    return with_q(double(center_t) - t_capped, [&](double q) { return scale_d - w * q; });
   }
   // F(t) by the scalar path: 0 at or below t_cut, NaN for NaN, else unrounded(t) rounded to
   // float and clamped to [0, scale_f]. (A branch-free cut measured 4 to 8 times slower here:

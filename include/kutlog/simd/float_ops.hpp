@@ -81,7 +81,7 @@ struct Pair {
   Batch hi, lo;
   // By value, into registers: with the aggregate's member-wise copy GCC 12 left a dead store
   // of each half to the stack in the loops, and realigned the stack of every call for them.
-  Pair(Batch hi, Batch lo) : hi(hi), lo(lo) {}
+  Pair(Batch high, Batch low) : hi(high), lo(low) {}
 };
 
 // a + b = hi + lo exactly, whatever their magnitudes (Knuth's TwoSum: six operations).

@@ -225,10 +225,10 @@ inline floats<Arch> exp_u10(floats<Arch> x) {
   // microcode assist in the conversion.
   const F clamped =
       xsimd::min(xsimd::max(detail::zero_if_below(x, 0x1p-26f), F(-104.0f)), F(89.0f));
-  const auto exp_half = [](D x) {
-    const D n = xsimd::nearbyint(x * D(detail::kLog2eDouble));
-    // One rounding of x - n ln2: |n ln2 error| < 150 * 2^-53, far below what float needs.
-    return scale_by_exp2(detail::exp_reduced(neg_mul_add(n, D(0.69314718055994530942), x)), n);
+  const auto exp_half = [](D x_half) {
+    const D n = xsimd::nearbyint(x_half * D(detail::kLog2eDouble));
+    // One rounding of x_half - n ln2: |n ln2 error| < 150 * 2^-53, far below what float needs.
+    return scale_by_exp2(detail::exp_reduced(neg_mul_add(n, D(0.69314718055994530942), x_half)), n);
   };
   const Pair<D> halves = widen(clamped);
   return xsimd::select(xsimd::isnan(x), x, narrow(exp_half(halves.hi), exp_half(halves.lo)));
@@ -311,8 +311,8 @@ inline floats<Arch> pow_positive(floats<Arch> x, floats<Arch> y) {
   using D = doubles<Arch>;
   namespace c = constants;
   const Decomposed<Arch> d = decompose<kSubnormals>(x);
-  const Pair<D> m = widen(d.m), e = widen(d.e), yd = widen(y);
-  const auto pow_half = [](D m, D e, D y) {
+  const Pair<D> m_halves = widen(d.m), e_halves = widen(d.e), y_halves = widen(y);
+  const auto pow_half = [](D m, D e, D exponent) {
     const D one(1.0), m_plus_one = m + one;  // exact
     // 1 / (m + 1): an estimate with relative error e (|e| <= 2^-12), times 1 + e + e^2,
     // leaves e^3 <= 2^-36.
@@ -326,12 +326,13 @@ inline floats<Arch> pow_positive(floats<Arch> x, floats<Arch> y) {
     const D log2_m = mul_add(s * z, horner(z, kPowLog2), s * D(2 * kLog2eDouble));
     // Beyond [-200, 200] the float result is 0 or inf whatever t is; clamping also keeps the
     // double result normal (an underflowing one costs a microcode assist).
-    const D t = xsimd::min(xsimd::max(y * (e + log2_m), D(-200.0)), D(200.0));
+    const D t = xsimd::min(xsimd::max(exponent * (e + log2_m), D(-200.0)), D(200.0));
     const D n = xsimd::nearbyint(t);
     const D r_exp = (t - n) * D(0.69314718055994530942);
     return scale_by_exp2(exp_reduced(r_exp), n);
   };
-  return narrow(pow_half(m.hi, e.hi, yd.hi), pow_half(m.lo, e.lo, yd.lo));
+  return narrow(pow_half(m_halves.hi, e_halves.hi, y_halves.hi),
+                pow_half(m_halves.lo, e_halves.lo, y_halves.lo));
 }
 }  // namespace detail
 
