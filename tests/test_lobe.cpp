@@ -57,8 +57,8 @@ TEST_P(LobePerArch, DataRulePeakCutoffNegativeNaN) {
 }
 
 // Off the grid: random lobes, 2^18 floats of each support and every float of each epicenter
-// up to 2^21 of them (strided beyond). LobeExhaustive sweeps twice as many lobes, 8 times as
-// densely.
+// up to 2^21 of them (strided beyond). LobeExhaustive sweeps eight times as many lobes, 8
+// times as densely.
 TEST_P(LobePerArch, RandomLobesWithinBoundsAndBetweenZeroAndPeak) {
   expect_random_lobes_within_bounds(12, 2026, 0x1p18, 0x1p21);
 }

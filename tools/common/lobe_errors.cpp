@@ -57,7 +57,7 @@ std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep, LobeEv
   // The first float of the epicenter (rounded down: a float more costs nothing).
   const std::uint32_t epicenter_key =
       std::max(cut_key + 1, order_key(std::nextafter(float(epicenter_edge(lobe)), -1.0f)));
-  constexpr std::uint32_t kBoundary = 1 << 16, kBelowCutStride = 61;
+  constexpr std::uint32_t kBoundary = 1 << 16;
   const std::uint32_t end_reach =
       std::max<std::uint32_t>(kBoundary / sweep.support_stride, 1 << 10);
   // Segments of order keys [first, last] sampled every `step`.
@@ -65,7 +65,7 @@ std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep, LobeEv
     std::uint32_t first, last, step;
   };
   std::vector<Segment> segments = {
-      {first_key, cut_key, kBelowCutStride * sweep.support_stride},
+      {first_key, cut_key, sweep.below_cut_stride},
       {cut_key - std::min(kBoundary, cut_key - first_key), cut_key, 1},
       {std::max(zero_key, first_key + kBoundary) - kBoundary, std::min(zero_key + kBoundary, cut_key), 1},
       {cut_key + 1, epicenter_key - 1, sweep.support_stride},

@@ -44,13 +44,14 @@ inline constexpr Normalization kLobeNormalizations[] = {Normalization::none,
 // Which floats t a sweep takes: every `support_stride`-th float of the support (t above the
 // cut) outside the epicenter, every `epicenter_stride`-th inside it (F >= 0.6); 1: every float.
 // Below the cut, where the reference is 0 and the kernels decide by one comparison: every
-// (61 support_stride)-th float plus every float within 2^16 of the cut and of 0. There the
-// kernels must give exactly 0. And every float within 2^16 / support_stride (at least 2^10)
-// above the cut and below 1, where the output meets 0 and the peak, and within 2^12 of each
-// SIMD kernel's own cut (the clamps there are dropped where the setup proves them needless,
-// the cut raised: kutlog/lobe.hpp).
+// `below_cut_stride`-th float (by default every (61 support_stride)-th) plus every float
+// within 2^16 of the cut and of 0. There the kernels must give exactly 0. And every float
+// within 2^16 / support_stride (at least 2^10) above the cut and below 1, where the output
+// meets 0 and the peak, and within 2^12 of each SIMD kernel's own cut (the clamps there are
+// dropped where the setup proves them needless, the cut raised: kutlog/lobe.hpp).
 struct LobeSweep {
   std::uint32_t support_stride = 1, epicenter_stride = 1;
+  std::uint32_t below_cut_stride = 61 * support_stride;
 };
 
 // How a lobe's kernel is called on `count` floats: the array functions (dispatched to the
