@@ -31,8 +31,9 @@ inline std::vector<LobeCase> accuracy_grid() {
   return grid;
 }
 
-// Asserts kutlog/accuracy.hpp's bounds of the value returned and the hard contract
-// 0 <= out <= peak (1, or the float coef: the output at t = 1) for the four kernels of a lobe.
+// Asserts kutlog/accuracy.hpp's bounds of the value returned and the hard contracts
+// 0 <= out <= peak (1, or the float coef: the output at t = 1) and out = 0 exactly where F = 0
+// (at and below the cut-off) for the four kernels of a lobe.
 inline void expect_within_bounds(const Lobe& lobe, const std::array<tools::LobeErrors, 4>& errors) {
   const char* names[] = {"precise", "precise*coef", "fast", "fast*coef"};
   for (int i = 0; i < 4; ++i) {
@@ -52,6 +53,7 @@ inline void expect_within_bounds(const Lobe& lobe, const std::array<tools::LobeE
     }
     EXPECT_GE(errors[i].min_output, 0.0f) << "at t = " << errors[i].min_output_input;
     EXPECT_LE(errors[i].max_output, peak) << "at t = " << errors[i].max_output_input;
+    EXPECT_EQ(errors[i].max_where_zero, 0.0f) << "at t = " << errors[i].max_where_zero_input;
   }
 }
 
@@ -215,6 +217,7 @@ inline void expect_per_lane_within_bounds(const PerLaneCase& c, unsigned seed, s
     EXPECT_LE(errors.max_epicenter_ulp, bound.max_epicenter_ulp()) << "t = " << errors.worst_ulp_input;
     record_max("per_lane_abs_error", errors.max_abs_error);
     record_max("per_lane_epicenter_ulp", errors.max_epicenter_ulp);
+    EXPECT_EQ(errors.max_where_zero, 0.0f) << "at t = " << errors.max_where_zero_input;
     EXPECT_EQ(outside, 0u) << "e.g. t = " << t[first_outside] << ", n = " << n[first_outside]
                            << ": " << out[first_outside] << " against the peak "
                            << peak[first_outside];

@@ -23,6 +23,10 @@ void LobeErrors::add(float t, float out, double scale, double expected) {
   }
   if (out < min_output) min_output = out, min_output_input = t;
   if (out > max_output) max_output = out, max_output_input = t;
+  if (expected == 0) {
+    const float magnitude = std::isnan(out) ? INFINITY : std::fabs(out);
+    if (magnitude > max_where_zero) max_where_zero = magnitude, max_where_zero_input = t;
+  }
 }
 
 void LobeErrors::merge(const LobeErrors& from) {
@@ -34,6 +38,8 @@ void LobeErrors::merge(const LobeErrors& from) {
     min_output = from.min_output, min_output_input = from.min_output_input;
   if (from.max_output > max_output)
     max_output = from.max_output, max_output_input = from.max_output_input;
+  if (from.max_where_zero > max_where_zero)
+    max_where_zero = from.max_where_zero, max_where_zero_input = from.max_where_zero_input;
   inputs += from.inputs;
 }
 

@@ -24,6 +24,10 @@ struct LobeErrors {
   float max_output = -std::numeric_limits<float>::infinity();
   float min_output_input = std::numeric_limits<float>::quiet_NaN();
   float max_output_input = std::numeric_limits<float>::quiet_NaN();
+  // Where F = 0 (at and below the cut-off) the output must be an exact 0: the largest |out|
+  // there (NaN counts as infinite), and where.
+  float max_where_zero = 0;
+  float max_where_zero_input = std::numeric_limits<float>::quiet_NaN();
   std::uint64_t inputs = 0;
 
   // Records one output; NaN errors count as the worst.
