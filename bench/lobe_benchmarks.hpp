@@ -1,7 +1,8 @@
 // Benchmarks of the shading lobes, named with the tokens the ratio report reads:
 // lobe/<kernel>/n:<n>/k:<k>/arch:<arch>, kernel in kutlog_precise, kutlog_fast,
 // kutlog_perlane, pow_xsimd, pow_precise, schlick, copy; and the spans of a renderer,
-// span/<kernel>/n:1000/k:<k>/count:<count>/arch:<arch>.
+// span/<kernel>/n:1000/k:<k>/count:<count>/arch:<arch>, and the stream API on 16x16 tiles,
+// shade/<form>/n:1000/k:<k>/count:256/arch:<arch>, form in cosines, directions.
 #pragma once
 
 #include <benchmark/benchmark.h>
@@ -13,6 +14,7 @@
 #include "inputs.hpp"
 #include "kutlog/lobe.hpp"
 #include "kutlog/dispatch.hpp"
+#include "kutlog/shade.hpp"
 
 namespace kutlog::bench {
 
@@ -112,6 +114,37 @@ inline void register_lobe_benchmarks(Arch arch) {
                     });
         });
       }
+  // The stream API as a rasterizer calls it (examples/rasterizer): the 4096 inputs in tiles of
+  // 256 fragments, about 3 in 4 covered; from cosines and N.L, or from normals under one
+  // directional light and viewer (both +z, so that N.H is the t of the lobe's inputs).
+  for (int k : {3, 5}) {
+    const std::string at = "/n:1000/k:" + std::to_string(k) + "/count:256/arch:" + arch_label;
+    const auto tiles = [=](benchmark::State& state, auto shade_tile) {
+      const Lobe lobe(1000, k, kLobeAnchor);
+      const std::vector<float> t = lobe_inputs(lobe), n_dot_l = uniform_inputs(-0.2f, 1, 3);
+      std::vector<std::uint8_t> covered(N);
+      for (std::size_t i = 0; i < N; ++i) covered[i] = (i * 7919) % 4 != 0;
+      run_array(state, arch, t, n_dot_l, [&](const float* x, const float* y, float* out) {
+        for (std::size_t i = 0; i < N; i += 256) shade_tile(lobe, x, y, covered.data(), out, i);
+      });
+    };
+    benchmark::RegisterBenchmark(("shade/cosines" + at).c_str(), [=](benchmark::State& state) {
+      tiles(state, [](const Lobe& lobe, const float* t, const float* n_dot_l,
+                      const std::uint8_t* covered, float* out, std::size_t i) {
+        shade(lobe, t + i, n_dot_l + i, out + i, 256, covered + i);
+      });
+    });
+    benchmark::RegisterBenchmark(("shade/directions" + at).c_str(), [=](benchmark::State& state) {
+      const std::vector<float> t = lobe_inputs(Lobe(1000, k, kLobeAnchor));
+      std::vector<float> nx(N), ny(N, 0.0f), nz(t);
+      for (std::size_t i = 0; i < N; ++i) nx[i] = std::sqrt(std::max(0.0f, 1 - t[i] * t[i]));
+      tiles(state, [&](const Lobe& lobe, const float*, const float*, const std::uint8_t* covered,
+                       float* out, std::size_t i) {
+        shade(lobe, Vectors{nx.data() + i, ny.data() + i, nz.data() + i}, Direction{0, 0, 1},
+              Direction{0, 0, 1}, out + i, 256, covered + i);
+      });
+    });
+  }
   benchmark::RegisterBenchmark(("lobe/copy/arch:" + arch_label).c_str(), [arch](benchmark::State& state) {
     const std::vector<float> t = uniform_inputs(0, 1);
     run_array(state, arch, t, t, [](const float* x, const float*, float* out) {

@@ -3,10 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include "kutlog/accuracy.hpp"
@@ -212,6 +212,52 @@ TEST_P(ShadePerArch, DirectionsAndOptionalNDotLAgreeWithTheArrays) {
   shade(lobe, t.data(), nullptr, from_cosines.data(), 157, nullptr, bare);
   lobe.eval(t.data(), evaluated.data(), 157);
   for (std::size_t i = 0; i < 157; ++i) ASSERT_EQ(from_cosines[i], evaluated[i]) << "t = " << t[i];
+}
+
+// Every shade form runs the lobe by the loop Lobe::eval runs for its kernel (a loop per degree,
+// finish and clamp), a chunk of 256 lanes at a time: over lobes whose kernels take different
+// loops, both variants and normalizations,
+// and counts across chunk ends, with a mask, the cosine form gives eval's output times
+// max(N.L, 0), bit for bit, where the mask selects, and leaves the other lanes as they were.
+TEST_P(ShadePerArch, CosinesGiveEvalTimesNDotLAcrossChunksAndKernels) {
+  std::mt19937 engine(7);
+  std::uniform_real_distribution<float> cosine(-0.2f, 1.05f), n_l(-0.5f, 1.0f);
+  constexpr std::size_t kMost = 1100;
+  std::vector<float> t(kMost), n_dot_l(kMost), evaluated(kMost), out(kMost);
+  std::vector<std::uint8_t> mask(kMost);
+  for (std::size_t i = 0; i < kMost; ++i)
+    t[i] = cosine(engine), n_dot_l[i] = n_l(engine), mask[i] = (i * 5) % 7 < 4;
+  t[3] = NAN, n_dot_l[6] = NAN, t[700] = 1.5f;  // all three selected
+  // Their kernels (on AVX2 and SSE4.1) run unrolled without the clamp, plain and split (n =
+  // 1000), compensated (2, 2, 0.1 normalized), in double lanes (2, 6, 0.1 normalized) and as
+  // the clamped constant of a support with no float below 1 (n = 10^8).
+  for (const auto& [n, k, Q] : {std::tuple{1000.0, 3, 0.5}, std::tuple{1000.0, 5, 0.5},
+                                std::tuple{2.0, 2, 0.1}, std::tuple{2.0, 6, 0.1},
+                                std::tuple{1e8, 1, 0.1}, std::tuple{2e5, 12, 0.7}})
+    for (Variant variant : {Variant::precise, Variant::fast})
+      for (Normalization normalization : {Normalization::none, Normalization::exact_coef}) {
+        const Lobe lobe(n, k, Q);
+        ShadeOptions options;
+        options.variant = variant;
+        options.normalization = normalization;
+        lobe.eval(t.data(), evaluated.data(), kMost, variant, normalization);
+        for (std::size_t count : {std::size_t(255), std::size_t(256), std::size_t(257), kMost}) {
+          std::fill(out.begin(), out.end(), -7.0f);
+          shade(lobe, t.data(), n_dot_l.data(), out.data(), count, mask.data(), options);
+          for (std::size_t i = 0; i < kMost; ++i) {
+            const float expected =
+                !(i < count && mask[i]) ? -7.0f
+                : std::isnan(n_dot_l[i]) ? NAN
+                                         : evaluated[i] * std::max(0.0f, n_dot_l[i]);
+            if (std::isnan(expected)) {
+              ASSERT_TRUE(std::isnan(out[i])) << "lane " << i;
+              continue;
+            }
+            ASSERT_EQ(std::bit_cast<std::uint32_t>(out[i]), std::bit_cast<std::uint32_t>(expected))
+                << "n " << n << " k " << k << " count " << count << " lane " << i;
+          }
+        }
+      }
 }
 
 INSTANTIATE_TEST_SUITE_P(Arch, ShadePerArch, testing::ValuesIn(supported_archs()), arch_test_name);

@@ -74,20 +74,20 @@ inline void map_arrays(const Kernel& kernel, const float* const (&inputs)[Inputs
                        std::size_t count, float padding = 0.5f) {
   using F = xsimd::batch<float, Arch>;
   constexpr std::size_t N = F::size;
+  const auto apply = [&](const auto& load) {
+    return [&]<int... input>(std::integer_sequence<int, input...>) {
+      return kernel(load(input)...);
+    }(std::make_integer_sequence<int, Inputs>());
+  };
   std::size_t i = 0;
-  const auto load = [&](int input) { return F::load_unaligned(inputs[input] + i); };
-  for (; i + N <= count; i += N) {
-    if constexpr (Inputs == 1) kernel(load(0)).store_unaligned(out + i);
-    if constexpr (Inputs == 2) kernel(load(0), load(1)).store_unaligned(out + i);
-  }
+  for (; i + N <= count; i += N)
+    apply([&](int input) { return F::load_unaligned(inputs[input] + i); }).store_unaligned(out + i);
   if (i == count) return;
   const std::size_t tail = count - i;
-  const auto partial = [&](int input) {
+  const F value = apply([&](int input) {
     return load_partial<Arch>(Arch{}, inputs[input] + i, tail, padding);
-  };
-  if constexpr (Inputs == 1) store_partial<Arch>(Arch{}, out + i, kernel(partial(0)), tail);
-  if constexpr (Inputs == 2)
-    store_partial<Arch>(Arch{}, out + i, kernel(partial(0), partial(1)), tail);
+  });
+  store_partial<Arch>(Arch{}, out + i, value, tail);
 }
 
 // The lobe over an array: the polynomial form with its degree as a template argument (unrolled,
@@ -157,16 +157,47 @@ inline void map_masked(const Kernel& kernel, const float* const (&inputs)[Inputs
   for (std::size_t j = 0; j < tail; ++j) out[i + j] = result[j];
 }
 
-// The specular term of one batch: F(t), times max(N.L, 0) if asked.
-template <class Arch>
-inline floats_of<Arch> specular(const simd::PreparedLobe<Arch>& lobe, const ShadeOptions& options,
-                                const simd::Vector3<Arch>& n, const simd::Vector3<Arch>& l,
-                                const simd::Vector3<Arch>& v) {
+// The shade forms run a chunk at a time: the chunk's cosines t (and N.L) into local buffers,
+// unless the caller gave them; F(t) by the array loop of the kernel's slot, the one
+// Lobe::eval runs (degree unrolled, finish fixed, clamp dropped where proven needless); then
+// F, times max(N.L, 0) if asked, stored where mask selects. The buffers stay in L1. (One loop
+// per form and slot instead would compile each form 86 times per arch: measured 13x the code
+// and 6x the compile time of this file.)
+constexpr std::size_t kShadeChunk = 256;
+
+// Where a chunk's t and N.L are (N.L only read when options.times_n_dot_l): the given arrays
+// or the buffers cosines(begin, size, t_buffer, n_dot_l_buffer) filled.
+struct ChunkCosines {
+  const float* t;
+  const float* n_dot_l;
+};
+template <class Arch, class Cosines>
+void shade_in_chunks(const LobeKernel& kernel, const ShadeOptions& options,
+                     const Cosines& cosines, float* out, std::size_t count,
+                     const std::uint8_t* mask) {
   using F = floats_of<Arch>;
-  const F n_dot_l = simd::dot(n, l);
-  const F t = options.reflection == Reflection::blinn ? simd::blinn_cosine(n, l, v)
-                                                      : simd::phong_cosine(n, l, v, n_dot_l);
-  return options.times_n_dot_l ? lobe(t) * xsimd::max(F(0.0f), n_dot_l) : lobe(t);
+  static constexpr LobeArrayKernels kLobeLoops = lobe_array_kernels<Arch>();
+  const LobeArrayKernel lobe_loop = kLobeLoops.of(kernel);
+  alignas(64) float t_buffer[kShadeChunk], n_dot_l_buffer[kShadeChunk], lobe[kShadeChunk];
+  for (std::size_t begin = 0; begin < count; begin += kShadeChunk) {
+    const std::size_t size = count - begin < kShadeChunk ? count - begin : kShadeChunk;
+    const ChunkCosines chunk = cosines(begin, size, t_buffer, n_dot_l_buffer);
+    lobe_loop(kernel, chunk.t, lobe, size);
+    const std::uint8_t* lanes = mask ? mask + begin : nullptr;
+    if (options.times_n_dot_l)
+      map_masked<Arch, 2>([](F f, F n_l) { return f * xsimd::max(F(0.0f), n_l); },
+                          {lobe, chunk.n_dot_l}, out + begin, size, lanes);
+    else
+      map_masked<Arch, 1>([](F f) { return f; }, {lobe}, out + begin, size, lanes);
+  }
+}
+
+// The cosine the lobe takes, by options.reflection: N.H (Blinn) or R.V (Phong).
+template <class Arch>
+inline floats_of<Arch> lobe_cosine(const ShadeOptions& options, const simd::Vector3<Arch>& n,
+                                   const simd::Vector3<Arch>& l, const simd::Vector3<Arch>& v) {
+  return options.reflection == Reflection::blinn ? simd::blinn_cosine(n, l, v)
+                                                 : simd::phong_cosine(n, l, v, simd::dot(n, l));
 }
 
 template <class Arch>
@@ -174,14 +205,22 @@ void shade_vectors_array(const LobeKernel& kernel, const ShadeOptions& options, 
                          Vectors to_light, Vectors to_viewer, float* out, std::size_t count,
                          const std::uint8_t* mask) {
   using F = floats_of<Arch>;
-  const simd::PreparedLobe<Arch> lobe(kernel);
-  const auto shader = [&](F nx, F ny, F nz, F lx, F ly, F lz, F vx, F vy, F vz) {
-    return specular<Arch>(lobe, options, {nx, ny, nz}, {lx, ly, lz}, {vx, vy, vz});
+  const auto cosines = [&](std::size_t begin, std::size_t size, float* t, float* n_dot_l) {
+    const float *nx = normal.x + begin, *ny = normal.y + begin, *nz = normal.z + begin,
+                *lx = to_light.x + begin, *ly = to_light.y + begin, *lz = to_light.z + begin;
+    map_arrays<Arch, 9>(
+        [&](F n_x, F n_y, F n_z, F l_x, F l_y, F l_z, F v_x, F v_y, F v_z) {
+          return lobe_cosine<Arch>(options, {n_x, n_y, n_z}, {l_x, l_y, l_z}, {v_x, v_y, v_z});
+        },
+        {nx, ny, nz, lx, ly, lz, to_viewer.x + begin, to_viewer.y + begin, to_viewer.z + begin},
+        t, size);
+    if (options.times_n_dot_l)
+      map_arrays<Arch, 6>([](F n_x, F n_y, F n_z, F l_x, F l_y, F l_z) {
+        return simd::dot<Arch>({n_x, n_y, n_z}, {l_x, l_y, l_z});
+      }, {nx, ny, nz, lx, ly, lz}, n_dot_l, size);
+    return ChunkCosines{t, n_dot_l};
   };
-  map_masked<Arch, 9>(shader,
-                      {normal.x, normal.y, normal.z, to_light.x, to_light.y, to_light.z,
-                       to_viewer.x, to_viewer.y, to_viewer.z},
-                      out, count, mask);
+  shade_in_chunks<Arch>(kernel, options, cosines, out, count, mask);
 }
 
 template <class Arch>
@@ -189,25 +228,29 @@ void shade_directions_array(const LobeKernel& kernel, const ShadeOptions& option
                             Direction to_light, Direction to_viewer, float* out,
                             std::size_t count, const std::uint8_t* mask) {
   using F = floats_of<Arch>;
-  const simd::PreparedLobe<Arch> lobe(kernel);
   const simd::Vector3<Arch> l{F(to_light.x), F(to_light.y), F(to_light.z)},
       v{F(to_viewer.x), F(to_viewer.y), F(to_viewer.z)};
-  map_masked<Arch, 3>([&](F nx, F ny, F nz) { return specular<Arch>(lobe, options, {nx, ny, nz}, l, v); },
-                      {normal.x, normal.y, normal.z}, out, count, mask);
+  const auto cosines = [&](std::size_t begin, std::size_t size, float* t, float* n_dot_l) {
+    const float* const n[3] = {normal.x + begin, normal.y + begin, normal.z + begin};
+    map_arrays<Arch, 3>(
+        [&](F n_x, F n_y, F n_z) { return lobe_cosine<Arch>(options, {n_x, n_y, n_z}, l, v); },
+        n, t, size);
+    if (options.times_n_dot_l)
+      map_arrays<Arch, 3>([&](F n_x, F n_y, F n_z) { return simd::dot<Arch>({n_x, n_y, n_z}, l); },
+                          n, n_dot_l, size);
+    return ChunkCosines{t, n_dot_l};
+  };
+  shade_in_chunks<Arch>(kernel, options, cosines, out, count, mask);
 }
 
 template <class Arch>
 void shade_cosines_array(const LobeKernel& kernel, const ShadeOptions& options, const float* t,
                          const float* n_dot_l, float* out, std::size_t count,
                          const std::uint8_t* mask) {
-  using F = floats_of<Arch>;
-  const simd::PreparedLobe<Arch> lobe(kernel);
-  if (!options.times_n_dot_l) {
-    map_masked<Arch, 1>([&](F cosine) { return lobe(cosine); }, {t}, out, count, mask);
-    return;
-  }
-  map_masked<Arch, 2>([&](F cosine, F n_l) { return lobe(cosine) * xsimd::max(F(0.0f), n_l); },
-                      {t, n_dot_l}, out, count, mask);
+  const auto given = [&](std::size_t begin, std::size_t, float*, float*) {
+    return ChunkCosines{t + begin, options.times_n_dot_l ? n_dot_l + begin : nullptr};
+  };
+  shade_in_chunks<Arch>(kernel, options, given, out, count, mask);
 }
 
 // The sampler over arrays: four outputs per pair of inputs, the tail as a partial batch.
