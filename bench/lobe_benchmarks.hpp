@@ -115,15 +115,16 @@ inline void register_lobe_benchmarks(Arch arch) {
         });
       }
   // The stream API as a rasterizer calls it (examples/rasterizer): the 4096 inputs in tiles of
-  // 256 fragments, about 3 in 4 covered; from cosines and N.L, or from normals under one
-  // directional light and viewer (both +z, so that N.H is the t of the lobe's inputs).
+  // 16x16 fragments, each covered but for a corner cut off by a triangle's edge (x + y < 8, 36
+  // pixels: of the 32 batches of 8 lanes, 1 empty and 7 mixed); from cosines and N.L, or from normals under
+  // one directional light and viewer (both +z, so that N.H is the t of the lobe's inputs).
   for (int k : {3, 5}) {
     const std::string at = "/n:1000/k:" + std::to_string(k) + "/count:256/arch:" + arch_label;
     const auto tiles = [=](benchmark::State& state, auto shade_tile) {
       const Lobe lobe(1000, k, kLobeAnchor);
       const std::vector<float> t = lobe_inputs(lobe), n_dot_l = uniform_inputs(-0.2f, 1, 3);
       std::vector<std::uint8_t> covered(N);
-      for (std::size_t i = 0; i < N; ++i) covered[i] = (i * 7919) % 4 != 0;
+      for (std::size_t i = 0; i < N; ++i) covered[i] = i % 16 + i / 16 % 16 >= 8;
       run_array(state, arch, t, n_dot_l, [&](const float* x, const float* y, float* out) {
         for (std::size_t i = 0; i < N; i += 256) shade_tile(lobe, x, y, covered.data(), out, i);
       });

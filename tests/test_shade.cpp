@@ -225,9 +225,13 @@ TEST_P(ShadePerArch, CosinesGiveEvalTimesNDotLAcrossChunksAndKernels) {
   constexpr std::size_t kMost = 1100;
   std::vector<float> t(kMost), n_dot_l(kMost), evaluated(kMost), out(kMost);
   std::vector<std::uint8_t> mask(kMost);
-  for (std::size_t i = 0; i < kMost; ++i)
-    t[i] = cosine(engine), n_dot_l[i] = n_l(engine), mask[i] = (i * 5) % 7 < 4;
-  t[3] = NAN, n_dot_l[6] = NAN, t[700] = 1.5f;  // all three selected
+  // The mask in runs of 16 lanes selected, unselected and mixed: whole batches of each kind on
+  // every arch.
+  for (std::size_t i = 0; i < kMost; ++i) {
+    t[i] = cosine(engine), n_dot_l[i] = n_l(engine);
+    mask[i] = i / 16 % 3 == 0 || (i / 16 % 3 == 2 && (i * 5) % 7 < 4);
+  }
+  t[3] = NAN, n_dot_l[6] = NAN, t[680] = 1.5f;  // all three selected
   // Their kernels (on AVX2 and SSE4.1) run unrolled without the clamp, plain and split (n =
   // 1000), compensated (2, 2, 0.1 normalized), in double lanes (2, 6, 0.1 normalized) and as
   // the clamped constant of a support with no float below 1 (n = 10^8).

@@ -68,9 +68,12 @@ inline void store_partial(xsimd::avx512f, float* out, xsimd::batch<float, Arch> 
 #endif
 
 // Applies `kernel` to batches of `count` floats from each input array; the tail as a partial
-// batch padded with `padding` (a value inside every kernel's domain).
+// batch padded with `padding` (a value inside every kernel's domain). Inlined into its caller,
+// so that what the kernel captures by reference is seen not to alias the output: out of line
+// (GCC 12's choice for some), pow_xsimd's loop recomputed its exponent's constants per batch,
+// 15 % slower.
 template <class Arch, int Inputs, class Kernel>
-inline void map_arrays(const Kernel& kernel, const float* const (&inputs)[Inputs], float* out,
+[[gnu::always_inline]] inline void map_arrays(const Kernel& kernel, const float* const (&inputs)[Inputs], float* out,
                        std::size_t count, float padding = 0.5f) {
   using F = xsimd::batch<float, Arch>;
   constexpr std::size_t N = F::size;
@@ -129,13 +132,20 @@ inline void map_masked(const Kernel& kernel, const float* const (&inputs)[Inputs
                        std::size_t count, const std::uint8_t* mask) {
   using F = xsimd::batch<float, Arch>;
   constexpr std::size_t N = F::size;
+  // A batch no lane of which is selected is skipped, one whose every lane is stored whole: a
+  // rasterizer's coverage is mostly such batches, and a lane-masked store costs about 12
+  // cycles on AMD's AVX2 CPUs (measured: 57 % of a 16x16 tile's shading under a random mask).
   const auto run = [&](const float* const (&sources)[Inputs], std::size_t at, float* target,
                        const std::uint8_t* lanes) {
-    const F value = [&]<int... input>(std::integer_sequence<int, input...>) {
-      return kernel(F::load_unaligned(sources[input] + at)...);
-    }(std::make_integer_sequence<int, Inputs>());
-    if (lanes) simd::store_selected(target, value, simd::load_mask<Arch>(lanes));
-    else value.store_unaligned(target);
+    const auto value = [&] {
+      return [&]<int... input>(std::integer_sequence<int, input...>) {
+        return kernel(F::load_unaligned(sources[input] + at)...);
+      }(std::make_integer_sequence<int, Inputs>());
+    };
+    if (!lanes) return value().store_unaligned(target);
+    const auto selected = simd::load_mask<Arch>(lanes);
+    if (xsimd::all(selected)) value().store_unaligned(target);
+    else if (xsimd::any(selected)) simd::store_selected(target, value(), selected);
   };
   std::size_t i = 0;
   for (; i + N <= count; i += N) run(inputs, i, out + i, mask ? mask + i : nullptr);
