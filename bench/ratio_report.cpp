@@ -140,6 +140,25 @@ bool RatioCollector::print_call_shape_ratios(std::FILE* out) const {
                      kernel, arch.c_str(), k, 1e9 / one, 1e9 / sixteen, 1e9 / span157, 1e9 / whole,
                      whole / one, whole / sixteen, whole / span157, against_powf);
       }
+  // Tiles: ns per element of the stream API on 16x16 tiles, and its cost over the array eval's
+  // at 4096 (the lobe alone, same variant and normalization).
+  bool tiles = false;
+  for (const std::string& arch : compiled_arch_names())
+    for (int k : {3, 5}) {
+      const std::string at = "/n:1000/k:" + std::to_string(k);
+      const std::string tail = "/count:256/arch:" + arch;
+      const double cosines = rate("shade/cosines" + at + tail),
+                   directions = rate("shade/directions" + at + tail),
+                   lobe = rate("span/kutlog_precise" + at + "/count:4096/arch:" + arch);
+      if (cosines == 0 || directions == 0 || lobe == 0) continue;
+      if (!tiles)
+        std::fprintf(out, "\n| shade, 16x16 tiles, n = 1000 | arch | k | ns/element from cosines / "
+                          "directions | cost over the array eval's at 4096 |\n"
+                          "|---|---|---:|---|---|\n");
+      tiles = printed = true;
+      std::fprintf(out, "| shade | %s | %d | %.3f / %.3f | %.2fx / %.2fx |\n", arch.c_str(), k,
+                   1e9 / cosines, 1e9 / directions, lobe / cosines, lobe / directions);
+    }
   return printed;
 }
 
