@@ -116,8 +116,9 @@ inline void register_lobe_benchmarks(Arch arch) {
       }
   // The stream API as a rasterizer calls it (examples/rasterizer): the 4096 inputs in tiles of
   // 16x16 fragments, each covered but for a corner cut off by a triangle's edge (x + y < 8, 36
-  // pixels: of the 32 batches of 8 lanes, 1 empty and 7 mixed); from cosines and N.L, or from normals under
-  // one directional light and viewer (both +z, so that N.H is the t of the lobe's inputs).
+  // pixels: of the 32 batches of 8 lanes, 1 empty and 7 mixed); from cosines and N.L, or from
+  // normals under one directional light and viewer (both +z, so that N.H is the t of the
+  // lobe's inputs).
   for (int k : {3, 5}) {
     const std::string at = "/n:1000/k:" + std::to_string(k) + "/count:256/arch:" + arch_label;
     const auto tiles = [=](benchmark::State& state, auto shade_tile) {

@@ -73,8 +73,9 @@ inline void store_partial(xsimd::avx512f, float* out, xsimd::batch<float, Arch> 
 // (GCC 12's choice for some), pow_xsimd's loop recomputed its exponent's constants per batch,
 // 15 % slower.
 template <class Arch, int Inputs, class Kernel>
-[[gnu::always_inline]] inline void map_arrays(const Kernel& kernel, const float* const (&inputs)[Inputs], float* out,
-                       std::size_t count, float padding = 0.5f) {
+[[gnu::always_inline]] inline void map_arrays(const Kernel& kernel,
+                                              const float* const (&inputs)[Inputs], float* out,
+                                              std::size_t count, float padding = 0.5f) {
   using F = xsimd::batch<float, Arch>;
   constexpr std::size_t N = F::size;
   const auto apply = [&](const auto& load) {
