@@ -215,10 +215,11 @@ TEST_P(ShadePerArch, DirectionsAndOptionalNDotLAgreeWithTheArrays) {
 }
 
 // Every shade form runs the lobe by the loop Lobe::eval runs for its kernel (a loop per degree,
-// finish and clamp), a chunk of 256 lanes at a time: over lobes whose kernels take different
-// loops, both variants and normalizations,
-// and counts across chunk ends, with a mask, the cosine form gives eval's output times
-// max(N.L, 0), bit for bit, where the mask selects, and leaves the other lanes as they were.
+// finish and clamp), a chunk of 256 lanes at a time. Over lobes whose kernels take different
+// loops, both variants and normalizations, and counts across chunk ends, under a mask, the
+// cosine form gives eval's output times max(N.L, 0), bit for bit, where the mask selects, and
+// leaves the other lanes as they were. (The vector forms' chunks: BlinnAndPhongMatchTheReference,
+// 4099 lanes.)
 TEST_P(ShadePerArch, CosinesGiveEvalTimesNDotLAcrossChunksAndKernels) {
   std::mt19937 engine(7);
   std::uniform_real_distribution<float> cosine(-0.2f, 1.05f), n_l(-0.5f, 1.0f);

@@ -182,7 +182,7 @@ class Lobe {
   // F(t), or coef_exact * F(t): one fragment, inline, no dispatch, no allocation. The same
   // contract as the arrays', whatever the flags this is compiled with. Always inlined: GCC
   // (-O2 and -O3) called it out of line for its size, and the call, with the kernel's index
-  // computed per call, cost a fragment loop a quarter to a third of its time.
+  // computed per call, cost a fragment loop a sixth to a third of its time.
   [[gnu::always_inline]] float eval(float t, Variant variant = Variant::precise,
                                     Normalization normalization = Normalization::none) const {
     return kernel(variant, normalization, Arithmetic::scalar).evaluate(t);
