@@ -12,6 +12,7 @@ cd "$(dirname "$0")/.."
 bash scripts/setup-debian.sh --aarch64
 build_dir=${KUTLOG_AARCH64_BUILD_DIR:-build-aarch64}
 cmake -S . -B "$build_dir" -DCMAKE_TOOLCHAIN_FILE=cmake/aarch64-linux-gnu.cmake \
-  -DCMAKE_BUILD_TYPE=Release -DKUTLOG_TOOLS=OFF -DKUTLOG_BENCH=OFF -DKUTLOG_INSTALL=ON >/dev/null
+  -DCMAKE_BUILD_TYPE=Release -DKUTLOG_TOOLS=OFF -DKUTLOG_BENCH=OFF -DKUTLOG_INSTALL=ON \
+  -DCMAKE_COMPILE_WARNING_AS_ERROR="${KUTLOG_WERROR:-OFF}" >/dev/null
 cmake --build "$build_dir" -j "${KUTLOG_JOBS:-2}"
 ctest --test-dir "$build_dir" -j "${KUTLOG_JOBS:-2}" --output-on-failure "$@"

@@ -13,6 +13,8 @@
 # ctest --test-dir build-sanitize -L sanitize (everything there but the minutes of fuzzing).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Every build below treats compiler warnings as errors (scripts/build.sh).
+export KUTLOG_WERROR=ON
 # Each stage's time, printed as it ends (CI must stay well under 90 minutes; this says where
 # they go).
 stage_start=$SECONDS

@@ -183,6 +183,17 @@ static_assert(!std::is_constructible_v<Lobe, int, double, int>);
 static_assert(std::is_constructible_v<PerLaneLobe, double, double, int, double>);
 static_assert(!std::is_constructible_v<PerLaneLobe, double, double, double, double>);
 
+// The scalar eval takes floats only: a double t (or n) would be rounded without a word.
+template <class T>
+concept EvaluatesScalar = requires(const Lobe& lobe, T t) { lobe.eval(t); };
+template <class T, class N>
+concept EvaluatesPerLaneScalar = requires(const PerLaneLobe& lobe, T t, N n) { lobe.eval(t, n); };
+static_assert(EvaluatesScalar<float> && EvaluatesScalar<const float&>);
+static_assert(!EvaluatesScalar<double> && !EvaluatesScalar<int> && !EvaluatesScalar<long double>);
+static_assert(EvaluatesPerLaneScalar<float, float>);
+static_assert(!EvaluatesPerLaneScalar<double, float> && !EvaluatesPerLaneScalar<float, double>);
+static_assert(!EvaluatesPerLaneScalar<float, int>);
+
 // A normalized lobe whose coef exceeds FLT_MAX is refused at every call, before anything is
 // written; the unnormalized one works. A per-lane range too wide for one fit is refused.
 TEST(Lobe, CoefBeyondFloatAndTooWideRangesAreRefused) {

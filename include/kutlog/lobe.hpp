@@ -128,8 +128,9 @@ struct LobeKernel {
       case 11: return finish(horner<11>(x));
       case 12: return finish(horner<12>(x));
       default: {
-        double q = q_d[degree];
-        for (int i = degree; i-- > 0;) q = q * x + q_d[i];
+        std::size_t i = std::size_t(degree);
+        double q = q_d[i];
+        while (i-- > 0) q = q * x + q_d[i];
         return finish(q);
       }
     }
@@ -187,6 +188,12 @@ class Lobe {
                                     Normalization normalization = Normalization::none) const {
     return kernel(variant, normalization, Arithmetic::scalar).evaluate(t);
   }
+  // t is a float, as the kernels' inputs are. A double (or an integer) would be rounded here
+  // without a word, and near t = 1, where a narrow lobe lives, 1 - t keeps few of a double's
+  // digits: other arithmetic types do not compile. Convert explicitly, eval(float(t)).
+  template <class T>
+    requires(std::is_arithmetic_v<T> && !std::is_same_v<T, float>)
+  float eval(T, Variant = Variant::precise, Normalization = Normalization::none) const = delete;
 
   // out[i] = F(t[i]), or coef_exact * F(t[i]).
   void eval(const float* t, float* out, std::size_t count, Variant variant = Variant::precise,
@@ -243,7 +250,7 @@ struct PerLaneKernel {
   // the SIMD kernel's formulas (kutlog/simd/lobe.hpp), without its float roundings.
   float evaluate(float t, float n, bool normalized) const {
     if (t != t || n != n) return t + n;  // NaN
-    const double n_clamped = n < n_min ? n_min : n > n_max ? n_max : double(n);
+    const double n_clamped = double(n < n_min ? n_min : n > n_max ? n_max : n);
     const double y_offset = 1.0 / n_clamped - double(y_center);
     const double w = t < 1.0f ? 1.0 - double(t) : 0.0;
     const double v = n_clamped * horner(h, h_degree, y_offset) * (w * horner(g, g_degree, w));
@@ -257,8 +264,9 @@ struct PerLaneKernel {
 
  private:
   static double horner(const Coefficients& coefficients, int degree, double x) {
-    double result = coefficients[degree];
-    for (int i = degree; i-- > 0;) result = result * x + coefficients[i];
+    std::size_t i = std::size_t(degree);
+    double result = double(coefficients[i]);
+    while (i-- > 0) result = result * x + double(coefficients[i]);
     return result;
   }
 };
@@ -289,6 +297,11 @@ class PerLaneLobe {
   float eval(float t, float n, Normalization normalization = Normalization::none) const {
     return kernel_.evaluate(t, n, normalization == Normalization::exact_coef);
   }
+  // Floats only, as Lobe::eval(float): a double t or n does not compile.
+  template <class T, class N>
+    requires(std::is_arithmetic_v<T> && std::is_arithmetic_v<N> &&
+             !(std::is_same_v<T, float> && std::is_same_v<N, float>))
+  float eval(T, N, Normalization = Normalization::none) const = delete;
   // out[i] = F(t[i]; n[i]), or coef_exact(n[i]) * F(t[i]; n[i]).
   void eval(const float* t, const float* n, float* out, std::size_t count,
             Normalization normalization = Normalization::none) const;

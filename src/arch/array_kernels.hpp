@@ -72,23 +72,24 @@ inline void store_partial(xsimd::avx512f, float* out, xsimd::batch<float, Arch> 
 // so that what the kernel captures by reference is seen not to alias the output: out of line
 // (GCC 12's choice for some), pow_xsimd's loop recomputed its exponent's constants per batch,
 // 15 % slower.
-template <class Arch, int Inputs, class Kernel>
+template <class Arch, std::size_t Inputs, class Kernel>
 [[gnu::always_inline]] inline void map_arrays(const Kernel& kernel,
                                               const float* const (&inputs)[Inputs], float* out,
                                               std::size_t count, float padding = 0.5f) {
   using F = xsimd::batch<float, Arch>;
   constexpr std::size_t N = F::size;
   const auto apply = [&](const auto& load) {
-    return [&]<int... input>(std::integer_sequence<int, input...>) {
+    return [&]<std::size_t... input>(std::index_sequence<input...>) {
       return kernel(load(input)...);
-    }(std::make_integer_sequence<int, Inputs>());
+    }(std::make_index_sequence<Inputs>());
   };
   std::size_t i = 0;
   for (; i + N <= count; i += N)
-    apply([&](int input) { return F::load_unaligned(inputs[input] + i); }).store_unaligned(out + i);
+    apply([&](std::size_t input) { return F::load_unaligned(inputs[input] + i); })
+        .store_unaligned(out + i);
   if (i == count) return;
   const std::size_t tail = count - i;
-  const F value = apply([&](int input) {
+  const F value = apply([&](std::size_t input) {
     return load_partial<Arch>(Arch{}, inputs[input] + i, tail, padding);
   });
   store_partial<Arch>(Arch{}, out + i, value, tail);
@@ -128,7 +129,7 @@ constexpr LobeArrayKernels lobe_array_kernels() {
 
 // The stream loop: kernel(inputs...) on batches of Inputs arrays, stored where mask (if any)
 // selects. The tail goes through local buffers, as in map_arrays.
-template <class Arch, int Inputs, class Kernel>
+template <class Arch, std::size_t Inputs, class Kernel>
 inline void map_masked(const Kernel& kernel, const float* const (&inputs)[Inputs], float* out,
                        std::size_t count, const std::uint8_t* mask) {
   using F = xsimd::batch<float, Arch>;
@@ -139,9 +140,9 @@ inline void map_masked(const Kernel& kernel, const float* const (&inputs)[Inputs
   const auto run = [&](const float* const (&sources)[Inputs], std::size_t at, float* target,
                        const std::uint8_t* lanes) {
     const auto value = [&] {
-      return [&]<int... input>(std::integer_sequence<int, input...>) {
+      return [&]<std::size_t... input>(std::index_sequence<input...>) {
         return kernel(F::load_unaligned(sources[input] + at)...);
-      }(std::make_integer_sequence<int, Inputs>());
+      }(std::make_index_sequence<Inputs>());
     };
     if (!lanes) return value().store_unaligned(target);
     const auto selected = simd::load_mask<Arch>(lanes);
@@ -154,7 +155,7 @@ inline void map_masked(const Kernel& kernel, const float* const (&inputs)[Inputs
   const std::size_t tail = count - i;
   alignas(64) float buffers[Inputs][N];
   const float* sources[Inputs];
-  for (int input = 0; input < Inputs; ++input) {
+  for (std::size_t input = 0; input < Inputs; ++input) {
     for (std::size_t j = 0; j < N; ++j) buffers[input][j] = j < tail ? inputs[input][i + j] : 0.0f;
     sources[input] = buffers[input];
   }

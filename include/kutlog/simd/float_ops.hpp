@@ -201,7 +201,8 @@ template <arch_of<portable> Arch>
 inline Pair<doubles<Arch>> widen(floats<Arch> x) {
   constexpr std::size_t half = doubles<Arch>::size;
   typename doubles<Arch>::register_type low, high;
-  for (std::size_t i = 0; i < half; ++i) low[i] = x.data[i], high[i] = x.data[half + i];
+  for (std::size_t i = 0; i < half; ++i)
+    low[i] = double(x.data[i]), high[i] = double(x.data[half + i]);
   return {doubles<Arch>(low), doubles<Arch>(high)};
 }
 template <arch_of<portable> Arch>

@@ -65,8 +65,8 @@ class PreparedLobe {
       : kernel_(kernel), t_cut_(kernel.t_cut), center_(kernel.center_t), scale_(kernel.scale_f),
         finish_(kFinish == LobeFinish::any ? lobe_finish<Arch>(kernel) : kFinish) {
     if (finish() != LobeFinish::plain) scale_lo_ = F(kernel.scale_lo);
-    const int degree = kDegree >= 0 ? kDegree : kernel.degree;
-    for (int i = 0; i <= degree && i <= LobeKernel::kMaxDegree; ++i) q_[i] = F(kernel.q_f[i]);
+    const std::size_t degree = std::size_t(kDegree >= 0 ? kDegree : kernel.degree);
+    for (std::size_t i = 0; i <= degree && i < q_.size(); ++i) q_[i] = F(kernel.q_f[i]);
   }
 
   // Within [0, scale]: the clamp costs two instructions and removes the rounding below 0
@@ -96,8 +96,9 @@ class PreparedLobe {
         ((r = mul_add(r, s, q_[kDegree - 1 - i])), ...);
       }(std::make_integer_sequence<int, kDegree - 1>());
     } else {
-      r = q_[degree];
-      for (int i = degree; i-- > 1;) r = mul_add(r, s, q_[i]);
+      std::size_t i = std::size_t(degree);
+      r = q_[i];
+      while (i-- > 1) r = mul_add(r, s, q_[i]);
     }
     if constexpr (has_fused_fma<Arch>)
       if (finish() == LobeFinish::compensated) return compensated_cut_at(t, w, s, r);
@@ -135,8 +136,9 @@ class PreparedLobe {
   F double_form(F t) const {
     const auto half = [this](D t_half) {
       const D w = xsimd::max(D(0.0), D(1.0) - t_half);
-      D q(kernel_.q_d[kernel_.degree]);
-      for (int i = kernel_.degree; i-- > 0;) q = mul_add(q, w, D(kernel_.q_d[i]));
+      std::size_t i = std::size_t(kernel_.degree);
+      D q(kernel_.q_d[i]);
+      while (i-- > 0) q = mul_add(q, w, D(kernel_.q_d[i]));
       return D(kernel_.scale_d) * detail::integer_power(neg_mul_add(w, q, D(1.0)), kernel_.k);
     };
     const Pair<D> halves = widen(t);
@@ -146,7 +148,8 @@ class PreparedLobe {
   const LobeKernel& kernel_;
   F t_cut_, center_, scale_, scale_lo_;  // scale_lo_ set unless the finish is plain
   LobeFinish finish_;
-  std::array<F, (kDegree >= 0 ? kDegree : LobeKernel::kMaxDegree) + 1> q_;  // [0, degree] set
+  // [0, degree] set
+  std::array<F, std::size_t(kDegree >= 0 ? kDegree : LobeKernel::kMaxDegree) + 1> q_;
 };
 
 // A PerLaneKernel with its constants broadcast once: F(t; n) per lane (kutlog/lobe.hpp).
@@ -157,7 +160,7 @@ class PreparedPerLaneLobe {
 
   PreparedPerLaneLobe(const PerLaneKernel& kernel, bool normalized)
       : kernel_(kernel), normalized_(normalized) {
-    for (int i = 0; i <= PerLaneKernel::kMaxDegree; ++i)
+    for (std::size_t i = 0; i < h_.size(); ++i)
       h_[i] = F(kernel.h[i]), coef_k_[i] = F(kernel.coef_k[i]), g_[i] = F(kernel.g[i]),
       r_[i] = F(kernel.r[i]);
   }
@@ -194,8 +197,9 @@ class PreparedPerLaneLobe {
 
   using Batches = std::array<F, PerLaneKernel::kMaxDegree + 1>;
   static F horner(F x, const Batches& coefficients, int degree) {
-    F result = coefficients[degree];
-    for (int i = degree; i-- > 0;) result = mul_add(result, x, coefficients[i]);
+    std::size_t i = std::size_t(degree);
+    F result = coefficients[i];
+    while (i-- > 0) result = mul_add(result, x, coefficients[i]);
     return result;
   }
 

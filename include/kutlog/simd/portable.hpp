@@ -16,6 +16,7 @@
 // kutlog/simd/xsimd.hpp includes it first.
 #pragma once
 
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -55,14 +56,20 @@ using lane_int = std::conditional_t<
 template <class T>
 using mask_t = vector_t<lane_int<T>>;
 
-// A cast between vectors of one size keeps the bits (GCC's and clang's rule).
+// The same bits as a vector of another lane type of the same size (what GCC's and clang's
+// vector casts do, said without a C-style cast).
+template <class To, class From>
+inline To same_bits(From v) {
+  static_assert(sizeof(To) == sizeof(From));
+  return std::bit_cast<To>(v);
+}
 template <class T>
 inline mask_t<T> bits(vector_t<T> v) {
-  return (mask_t<T>)v;
+  return same_bits<mask_t<T>>(v);
 }
 template <class T>
 inline vector_t<T> from_bits(mask_t<T> v) {
-  return (vector_t<T>)v;
+  return same_bits<vector_t<T>>(v);
 }
 // Every lane set by f(lane): for what has no vector operator (sqrt, nearbyint).
 template <class T, class Function>
@@ -106,6 +113,7 @@ using kutlog::simd::portable_detail::bits;
 using kutlog::simd::portable_detail::each_lane;
 using kutlog::simd::portable_detail::from_bits;
 using kutlog::simd::portable_detail::mask_t;
+using kutlog::simd::portable_detail::same_bits;
 using kutlog::simd::portable_detail::vector_t;
 }  // namespace kutlog_portable
 
@@ -289,7 +297,7 @@ inline batch<T, A> bitwise_rshift(batch<T, A> const& self, batch<T, A> const& ot
 template <class A, class T, class To>
 inline batch<To, A> bitwise_cast(batch<T, A> const& self, batch<To, A> const&,
                                  requires_arch<kutlog_portable::portable>) noexcept {
-  return (kutlog_portable::vector_t<To>)self.data;
+  return kutlog_portable::same_bits<kutlog_portable::vector_t<To>>(self.data);
 }
 // A float lane's mask is an int32 lane's, a double's an int64's: the same register.
 #define KUTLOG_PORTABLE_BOOL_CAST(From, To)                                           \
@@ -311,7 +319,7 @@ KUTLOG_PORTABLE_BOOL_CAST(double, int64_t)
   template <class A, class T>                                                           \
   inline batch_bool<T, A> name(batch<T, A> const& self, batch<T, A> const& other,       \
                                requires_arch<kutlog_portable::portable>) noexcept {               \
-    return (kutlog_portable::mask_t<T>)(self.data op other.data);                       \
+    return kutlog_portable::same_bits<kutlog_portable::mask_t<T>>(self.data op other.data); \
   }
 KUTLOG_PORTABLE_COMPARISON(eq, ==)
 KUTLOG_PORTABLE_COMPARISON(neq, !=)
@@ -323,16 +331,16 @@ KUTLOG_PORTABLE_COMPARISON(ge, >=)
 template <class A, class T>
 inline batch_bool<T, A> eq(batch_bool<T, A> const& self, batch_bool<T, A> const& other,
                            requires_arch<kutlog_portable::portable>) noexcept {
-  return (kutlog_portable::mask_t<T>)(self.data == other.data);
+  return kutlog_portable::same_bits<kutlog_portable::mask_t<T>>(self.data == other.data);
 }
 template <class A, class T>
 inline batch_bool<T, A> neq(batch_bool<T, A> const& self, batch_bool<T, A> const& other,
                             requires_arch<kutlog_portable::portable>) noexcept {
-  return (kutlog_portable::mask_t<T>)(self.data != other.data);
+  return kutlog_portable::same_bits<kutlog_portable::mask_t<T>>(self.data != other.data);
 }
 template <class A, class T, class = std::enable_if_t<std::is_floating_point_v<T>>>
 inline batch_bool<T, A> isnan(batch<T, A> const& self, requires_arch<kutlog_portable::portable>) noexcept {
-  return (kutlog_portable::mask_t<T>)(self.data != self.data);
+  return kutlog_portable::same_bits<kutlog_portable::mask_t<T>>(self.data != self.data);
 }
 template <class A, class T>
 inline batch<T, A> select(batch_bool<T, A> const& condition, batch<T, A> const& if_true,
