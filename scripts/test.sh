@@ -4,7 +4,8 @@
 # in build-debug (compile only, nothing runs there). Then builds the portable kernels alone
 # (-DKUTLOG_PORTABLE_ONLY=ON) in build-portable and runs the quick tests there. Then
 # cross-compiles for aarch64 (NEON) and runs every test under qemu-aarch64, the sweeps sampled
-# (scripts/test-aarch64.sh). Then builds everything again with clang, AddressSanitizer and
+# (scripts/test-aarch64.sh). Then runs the tests of kutlog used from many threads at once
+# under ThreadSanitizer (build-tsan). Then builds everything again with clang, AddressSanitizer and
 # UndefinedBehaviorSanitizer in build-sanitize and runs every test there
 # except the exhaustive sweeps (ctest -LE exhaustive: under ASan they would take hours; the
 # sanitize build does not even register them), the libFuzzer targets included: each replays
@@ -49,6 +50,16 @@ stage_done portable
 # the NEON port shows sooner, and the fuzzing statistics stay the last lines of the run.
 bash scripts/test-aarch64.sh
 stage_done aarch64
+
+# ThreadSanitizer on the tests that run kutlog from many threads at once (setup and evaluation,
+# and the dispatch's first use): only their binaries are built, in build-tsan.
+tsan_dir=${KUTLOG_TSAN_BUILD_DIR:-build-tsan}
+cmake -S . -B "$tsan_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
+  -DKUTLOG_THREAD_SANITIZE=ON -DKUTLOG_BENCH=OFF -DCMAKE_COMPILE_WARNING_AS_ERROR=ON >/dev/null
+cmake --build "$tsan_dir" -j "${KUTLOG_JOBS:-2}" --target kutlog-test-threads kutlog-test-dispatch
+"$tsan_dir/tests/kutlog-test-threads"
+"$tsan_dir/tests/kutlog-test-dispatch" --gtest_filter=-DispatchUnderEnvironment.*
+stage_done "thread sanitizer"
 
 sanitize_dir=${KUTLOG_SANITIZE_BUILD_DIR:-build-sanitize}
 KUTLOG_BUILD_DIR=$sanitize_dir bash scripts/build.sh -DCMAKE_BUILD_TYPE=RelWithDebInfo \

@@ -118,20 +118,25 @@ const detail::KernelTable& table_of(Arch arch) { return entry(arch).kernel_table
 
 // The active arch's table, so that a call reads one pointer (a one-element eval spent two
 // fifths of its time going through active_arch() to its table): set by force_arch, cleared by
-// reset_arch, filled on first use after either.
+// reset_arch, filled on first use after either. Stored with release and loaded with acquire:
+// the thread that fills it may be the one that built the table (a function-local static), and
+// a relaxed load would let another thread read the table through the pointer before it sees
+// the table's contents (a data race ThreadSanitizer reported, tests/test_threads.cpp; on
+// x86-64 an acquire load is the same instruction, on AArch64 an ldar instead of an ldr).
 std::atomic<const detail::KernelTable*> active_table_cache{nullptr};
 
 [[gnu::noinline, gnu::cold]] const detail::KernelTable& fill_active_table() {
   const detail::KernelTable* table = &table_of(active_arch());
   const detail::KernelTable* expected = nullptr;  // a force_arch since then wins
-  return active_table_cache.compare_exchange_strong(expected, table, std::memory_order_relaxed)
+  return active_table_cache.compare_exchange_strong(expected, table, std::memory_order_acq_rel,
+                                                    std::memory_order_acquire)
              ? *table
              : *expected;
 }
 
 // Inlined into every entry point below: one load and one test.
 inline const detail::KernelTable& active_table() {
-  const detail::KernelTable* table = active_table_cache.load(std::memory_order_relaxed);
+  const detail::KernelTable* table = active_table_cache.load(std::memory_order_acquire);
   return table ? *table : fill_active_table();
 }
 
@@ -163,7 +168,7 @@ Arch active_arch() {
 void force_arch(Arch arch) {
   require_supported(arch, "forced");
   forced_arch.store(static_cast<int>(arch), std::memory_order_relaxed);
-  active_table_cache.store(&table_of(arch), std::memory_order_relaxed);
+  active_table_cache.store(&table_of(arch), std::memory_order_release);
 }
 
 void force_arch(std::string_view name) { force_arch(parse_arch(name)); }
@@ -207,7 +212,7 @@ void Lobe::eval(const float* t, float* out, std::size_t count, Variant variant,
                 Normalization normalization) const {
   // Written so that the common call saves no register and ends in a jump to the kernel: the
   // first call (and the first after reset_arch) and an overflowing coef (throws) go out of line.
-  const detail::KernelTable* table = active_table_cache.load(std::memory_order_relaxed);
+  const detail::KernelTable* table = active_table_cache.load(std::memory_order_acquire);
   if (!table || (normalization == Normalization::exact_coef && !coef_fits_float_)) [[unlikely]]
     return eval_out_of_line(t, out, count, variant, normalization);
   const int index = kernel_index(variant, normalization,
