@@ -18,6 +18,10 @@
 //   are at most 1 in magnitude: 2*3u + 2*3u + 3u = 15u; mul_sub rounds once where fused, and
 //   twice otherwise (the product, up to 2 in magnitude: 2u, then the difference: u):
 //   |t' - t| <= 18u.
+// - Blinn from one light and one viewer (shade's Direction form): H = (L + V) / |L + V| formed
+//   in double and rounded once per component, each off by at most u |h_i| (double's own
+//   error, below 2^-50, second order): N.h' - N.h <= u sum |N_i h_i| <= u; the dot adds 3u:
+//   |t' - t| <= 4u.
 // Each bound gets 0.5u on top for the second-order terms (9 gamma_3^2 and the like, below
 // 1e-5 u) and for vectors whose length is 1 within the fuzz target's 2^-20 on |v|^2.
 #pragma once
@@ -27,6 +31,7 @@ namespace kutlog::test {
 inline constexpr double kFloatUnitRoundoff = 0x1p-24;
 inline constexpr double kNDotLError = 3.5 * kFloatUnitRoundoff;
 inline constexpr double kBlinnCosineError = 9 * kFloatUnitRoundoff;
+inline constexpr double kBlinnHalfVectorCosineError = 4.5 * kFloatUnitRoundoff;
 inline constexpr double kPhongCosineError = 18.5 * kFloatUnitRoundoff;
 
 }  // namespace kutlog::test

@@ -57,6 +57,8 @@ void shade(const Lobe& lobe, Vectors normal, Vectors to_light, Vectors to_viewer
            std::size_t count, const std::uint8_t* mask = nullptr, ShadeOptions options = {});
 
 // A span lit by one directional light and seen from a fixed viewer: only the normals vary.
+// Blinn's H is formed once per call, in double, so t = N.H is closer to the exact cosine than
+// the arrays overload's (no underflow of |L + V|^2 either); Phong's R.V is computed as there.
 void shade(const Lobe& lobe, Vectors normal, Direction to_light, Direction to_viewer, float* out,
            std::size_t count, const std::uint8_t* mask = nullptr, ShadeOptions options = {});
 

@@ -3,6 +3,7 @@
 // can stand in for another's; it calls nothing from the standard library for that reason.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 
 #include "arch/kernel_table.hpp"
@@ -235,6 +236,24 @@ void shade_vectors_array(const LobeKernel& kernel, const ShadeOptions& options, 
   shade_in_chunks<Arch>(kernel, options, cosines, out, count, mask);
 }
 
+// Blinn's half vector of one light and one viewer, H = (L + V) / |L + V|, in double and rounded
+// once per component: the zero vector where L + V = 0 (N.H = 0, as blinn_cosine gives there),
+// NaN where L or V has a NaN or an infinity. A template, as everything here, though it does not
+// depend on the arch.
+template <class Arch>
+Direction half_vector(Direction to_light, Direction to_viewer) {
+  const double x = double(to_light.x) + double(to_viewer.x),
+               y = double(to_light.y) + double(to_viewer.y),
+               z = double(to_light.z) + double(to_viewer.z);
+  const double length = std::sqrt(x * x + y * y + z * z);
+  if (length == 0) return {0.0f, 0.0f, 0.0f};
+  return {float(x / length), float(y / length), float(z / length)};
+}
+
+// One light and one viewer for every lane: Blinn's H is formed once per call, so that a lane
+// computes N.H alone (blinn_cosine per lane took a square root and a division per batch, half
+// of this form's time), and closer to the exact cosine: 3.5 units of float rounding against 8.5
+// (tests/cosine_error.hpp).
 template <class Arch>
 void shade_directions_array(const LobeKernel& kernel, const ShadeOptions& options, Vectors normal,
                             Direction to_light, Direction to_viewer, float* out,
@@ -242,11 +261,21 @@ void shade_directions_array(const LobeKernel& kernel, const ShadeOptions& option
   using F = floats_of<Arch>;
   const simd::Vector3<Arch> l{F(to_light.x), F(to_light.y), F(to_light.z)},
       v{F(to_viewer.x), F(to_viewer.y), F(to_viewer.z)};
+  const Direction half = half_vector<Arch>(to_light, to_viewer);
+  const simd::Vector3<Arch> h{F(half.x), F(half.y), F(half.z)};
+  const bool blinn = options.reflection == Reflection::blinn;
   const auto cosines = [&](std::size_t begin, std::size_t size, float* t, float* n_dot_l) {
     const float* const n[3] = {normal.x + begin, normal.y + begin, normal.z + begin};
-    map_arrays<Arch, 3>(
-        [&](F n_x, F n_y, F n_z) { return lobe_cosine<Arch>(options, {n_x, n_y, n_z}, l, v); },
-        n, t, size);
+    if (blinn)
+      map_arrays<Arch, 3>([&](F n_x, F n_y, F n_z) { return simd::dot<Arch>({n_x, n_y, n_z}, h); },
+                          n, t, size);
+    else
+      map_arrays<Arch, 3>(
+          [&](F n_x, F n_y, F n_z) {
+            const simd::Vector3<Arch> normal_batch{n_x, n_y, n_z};
+            return simd::phong_cosine(normal_batch, l, v, simd::dot(normal_batch, l));
+          },
+          n, t, size);
     if (options.times_n_dot_l)
       map_arrays<Arch, 3>([&](F n_x, F n_y, F n_z) { return simd::dot<Arch>({n_x, n_y, n_z}, l); },
                           n, n_dot_l, size);

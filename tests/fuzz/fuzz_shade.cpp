@@ -1,5 +1,5 @@
-// libFuzzer target: the stream API of kutlog/shade.hpp on every arch this CPU supports -- both
-// overloads (SoA vectors, and cosines), Blinn and Phong, both variants and normalizations,
+// libFuzzer target: the stream API of kutlog/shade.hpp on every arch this CPU supports -- every
+// overload (SoA vectors, one light and viewer, and cosines), Blinn and Phong, both variants and normalizations,
 // with and without a lane mask -- against the scalar reference: out = F(t) max(N.L, 0) within
 // the lobe's bound (kutlog/accuracy.hpp) and the float rounding of the cosines, NaN in the data
 // gives NaN, L + V = 0 gives 0 (Blinn), unselected lanes keep their bits, and nothing outside
@@ -206,6 +206,24 @@ void fuzz_one(FuzzedDataProvider& data) {
       if (call.mask && !call.mask[i]) continue;
       if (from_vectors) check_vectors(call, i, *lobe, options, lanes[i], out.data()[i]);
       else check_cosines(call, i, *lobe, options, columns[0][i], columns[1][i], out.data()[i]);
+    }
+    if (!from_vectors || count == 0) return;
+    // The single-vector overload on the same normals, lane 0's light and viewer for every lane
+    // (its Blinn half vector, formed once, is within the same window).
+    const Lane& first = lanes[0];
+    GuardedOutput single(count, out_offset);
+    std::copy(before.begin(), before.end(), single.data());
+    call.arrays.back() = {"out (lane 0's light and viewer as Direction)", single.data()};
+    shade(lobe->lobe, {inputs[0].data(), inputs[1].data(), inputs[2].data()},
+          Direction{first.to_light.x, first.to_light.y, first.to_light.z},
+          Direction{first.to_viewer.x, first.to_viewer.y, first.to_viewer.z}, single.data(),
+          count, call.mask, options);
+    check_guards(single, call);
+    check_unselected_lanes_kept(single.values(), before, call.mask, call);
+    for (std::size_t i = 0; i < count; ++i) {
+      if (call.mask && !call.mask[i]) continue;
+      check_vectors(call, i, *lobe, options, {lanes[i].normal, first.to_light, first.to_viewer},
+                    single.data()[i]);
     }
   });
 }
