@@ -1,9 +1,9 @@
 // libFuzzer target: the stream API of kutlog/shade.hpp on every arch this CPU supports -- every
-// overload (SoA vectors, one light and viewer, and cosines), Blinn and Phong, both variants and normalizations,
-// with and without a lane mask -- against the scalar reference: out = F(t) max(N.L, 0) within
-// the lobe's bound (kutlog/accuracy.hpp) and the float rounding of the cosines, NaN in the data
-// gives NaN, L + V = 0 gives 0 (Blinn), unselected lanes keep their bits, and nothing outside
-// [0, count) is written.
+// overload (SoA vectors, one light and viewer, and cosines), Blinn and Phong, both variants
+// and normalizations, with and without a lane mask -- against the scalar reference:
+// out = F(t) max(N.L, 0) within the lobe's bound (kutlog/accuracy.hpp) and the float rounding
+// of the cosines, NaN in the data gives NaN, L + V = 0 gives 0 (Blinn), unselected lanes keep
+// their bits, and nothing outside [0, count) is written.
 #include <cmath>
 #include <limits>
 #include <string>
