@@ -270,10 +270,7 @@ void shade_directions_array(const LobeKernel& kernel, const ShadeOptions& option
                           n, t, size);
     else
       map_arrays<Arch, 3>(
-          [&](F n_x, F n_y, F n_z) {
-            const simd::Vector3<Arch> normal_batch{n_x, n_y, n_z};
-            return simd::phong_cosine(normal_batch, l, v, simd::dot(normal_batch, l));
-          },
+          [&](F n_x, F n_y, F n_z) { return lobe_cosine<Arch>(options, {n_x, n_y, n_z}, l, v); },
           n, t, size);
     if (options.times_n_dot_l)
       map_arrays<Arch, 3>([&](F n_x, F n_y, F n_z) { return simd::dot<Arch>({n_x, n_y, n_z}, l); },
