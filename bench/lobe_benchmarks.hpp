@@ -1,7 +1,8 @@
 // Benchmarks of the shading lobes, named with the tokens the ratio report reads:
 // lobe/<kernel>/n:<n>/k:<k>/arch:<arch>, kernel in kutlog_precise, kutlog_fast,
 // kutlog_perlane, pow_xsimd, pow_precise, schlick, copy; and the spans of a renderer,
-// span/<kernel>/n:1000/k:<k>/count:<count>/arch:<arch>, and the stream API on 16x16 tiles,
+// span/<kernel>/n:1000/k:<k>/count:<count>/arch:<arch> (kernel in kutlog_precise, kutlog_fast
+// and shade_cosines, the stream API's), and the stream API on 16x16 tiles,
 // shade/<form>/n:1000/k:<k>/count:256/arch:<arch>, form in cosines, directions.
 #pragma once
 
@@ -114,6 +115,21 @@ inline void register_lobe_benchmarks(Arch arch) {
                     });
         });
       }
+  // The same spans through the stream API from cosines and N.L (a scanline's span: covered,
+  // no mask), default options.
+  for (int k : {3, 5})
+    for (std::size_t count : kSpanCounts) {
+      const std::string name = "span/shade_cosines/n:1000/k:" + std::to_string(k) +
+                               "/count:" + std::to_string(count) + "/arch:" + arch_label;
+      benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& state) {
+        const Lobe lobe(1000, k, kLobeAnchor);
+        run_array(state, arch, lobe_inputs(lobe), uniform_inputs(-0.2f, 1, 3),
+                  [&](const float* x, const float* y, float* out) {
+                    for (std::size_t i = 0; i < N; i += count)
+                      shade(lobe, x + i, y + i, out + i, std::min(count, N - i));
+                  });
+      });
+    }
   // The stream API as a rasterizer calls it (examples/rasterizer): the 4096 inputs in tiles of
   // 16x16 fragments, each covered but for a corner cut off by a triangle's edge (x + y < 8, 36
   // pixels: of the 32 batches of 8 lanes, 1 empty and 7 mixed); from cosines and N.L, or from

@@ -115,11 +115,11 @@ bool RatioCollector::print_call_shape_ratios(std::FILE* out) const {
         std::fprintf(out, "| %s | %zu | %d | %.2f | %.2fx | %.2fx |\n", name, count, k, 1e9 / rate_of,
                      rate_of / powf, rate_of / pow_double);
     }
-  // Spans: ns per element of the array eval at each span length, and its cost over that of
-  // a 4096 span.
+  // Spans: ns per element of the array eval (and of shade from cosines) at each span length,
+  // and its cost over that of a 4096 span.
   bool spans = false;
   for (const std::string& arch : compiled_arch_names())
-    for (const char* kernel : {"kutlog_precise", "kutlog_fast"})
+    for (const char* kernel : {"kutlog_precise", "kutlog_fast", "shade_cosines"})
       for (int k : {3, 5}) {
         const std::string name = std::string("span/") + kernel + "/n:1000/k:" + std::to_string(k);
         const std::string tail = std::string("/arch:") + arch;

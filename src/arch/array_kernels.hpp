@@ -164,7 +164,7 @@ constexpr LobeArrayKernels lobe_array_kernels() {
 }
 
 // The stream loop: kernel(inputs...) on batches of Inputs arrays, stored where mask (if any)
-// selects. The tail goes through local buffers, as in map_arrays.
+// selects; the tail as a partial batch, as in map_arrays.
 template <class Arch, std::size_t Inputs, class Kernel>
 inline void map_masked(const Kernel& kernel, const float* const (&inputs)[Inputs], float* out,
                        std::size_t count, const std::uint8_t* mask) {
@@ -188,21 +188,16 @@ inline void map_masked(const Kernel& kernel, const float* const (&inputs)[Inputs
   std::size_t i = 0;
   for (; i + N <= count; i += N) run(inputs, i, out + i, mask ? mask + i : nullptr);
   if (i == count) return;
+  // The tail: a partial batch, merged with what out holds where the mask leaves it.
   const std::size_t tail = count - i;
-  alignas(64) float buffers[Inputs][N];
-  const float* sources[Inputs];
-  for (std::size_t input = 0; input < Inputs; ++input) {
-    for (std::size_t j = 0; j < N; ++j) buffers[input][j] = j < tail ? inputs[input][i + j] : 0.0f;
-    sources[input] = buffers[input];
-  }
-  alignas(64) float result[N];
-  std::uint8_t lanes[N];
-  for (std::size_t j = 0; j < N; ++j) {
-    result[j] = j < tail ? out[i + j] : 0.0f;
-    lanes[j] = j < tail && (!mask || mask[i + j]);
-  }
-  run(sources, 0, result, lanes);
-  for (std::size_t j = 0; j < tail; ++j) out[i + j] = result[j];
+  const F value = [&]<std::size_t... input>(std::index_sequence<input...>) {
+    return kernel(load_partial<Arch>(Arch{}, inputs[input] + i, tail, 0.0f)...);
+  }(std::make_index_sequence<Inputs>());
+  if (!mask) return store_partial<Arch>(Arch{}, out + i, value, tail);
+  std::uint8_t lanes[N] = {};
+  for (std::size_t j = 0; j < tail; ++j) lanes[j] = mask[i + j];
+  const F kept = load_partial<Arch>(Arch{}, out + i, tail, 0.0f);
+  store_partial<Arch>(Arch{}, out + i, xsimd::select(simd::load_mask<Arch>(lanes), value, kept), tail);
 }
 
 // The shade forms run a chunk at a time: the chunk's cosines t (and N.L) into local buffers,
