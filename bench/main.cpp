@@ -17,6 +17,7 @@
 #include <chrono>
 #include <cstring>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <random>
 #include <utility>
@@ -26,6 +27,7 @@
 
 #include "inputs.hpp"
 #include "lobe_benchmarks.hpp"
+#include "sampling_benchmarks.hpp"
 #include "kutlog/dispatch.hpp"
 #include "kutlog/sampling.hpp"
 #include "math_benchmarks.hpp"
@@ -89,6 +91,23 @@ void register_scalar_benchmarks() {
       add(("fragment/scalar_pow_double" + at).c_str(),
           [](float t) { return float(std::pow(double(std::max(t, 0.0f)), 1000.0)); }, cosines);
     }
+  // One Blinn-Phong half vector per call, as pbrt-v2 draws it (bench/sampling_benchmarks.hpp).
+  benchmark::RegisterBenchmark(
+      ("sample/sample_blinn_pow_scalar/n:" + std::to_string(kSamplingExponent)).c_str(),
+      [](benchmark::State& state) {
+        run_sampler(state, [](const float* u1, const float* u2, DirectionSamples out) {
+          constexpr float kExponent = kSamplingExponent, kTwoPi = float(2 * std::numbers::pi);
+          constexpr float kInverse = 1 / (kExponent + 1), kPdfScale = (kExponent + 1) / kTwoPi;
+          for (std::size_t i = 0; i < kArrayLength; ++i) {
+            const float cos_theta = std::pow(u1[i], kInverse), phi = kTwoPi * u2[i];
+            const float sin_theta = std::sqrt(std::max(0.0f, 1 - cos_theta * cos_theta));
+            out.x[i] = sin_theta * std::cos(phi);
+            out.y[i] = sin_theta * std::sin(phi);
+            out.z[i] = cos_theta;
+            out.pdf[i] = kPdfScale * u1[i] / cos_theta;
+          }
+        });
+      });
 }
 
 // Construction time of Lobe, PerLaneLobe and LobeSampler over 200 random materials (n

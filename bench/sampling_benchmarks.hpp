@@ -4,7 +4,11 @@
 //   sample_blinn_pow: Blinn-Phong half vectors as pbrt-v2 draws them, cos(theta) = u1^(1/(n+1))
 //                     with xsimd::pow, the azimuth's sin and cos with xsimd::sincos, and the pdf
 //                     (n+1)/(2 pi) cos^n = (n+1)/(2 pi) u1 / cos(theta) (no second pow).
-// Both write the same four arrays (x, y, z, pdf) from the same two of uniform numbers.
+// and, as a path tracer calls a sampler (one direction per bounce), one sample per call:
+//   sample_kutlog/n:1000/k:3/count:1/arch:<arch>: LobeSampler::sample with count 1;
+//   sample_blinn_pow_scalar/n:1000 (bench/main.cpp): pbrt-v2's, scalar, with std::pow, std::cos
+//                     and std::sin in float.
+// All write the same four arrays (x, y, z, pdf) from the same two of uniform numbers.
 // Instantiated by bench/arch_benchmarks.cpp, compiled with that arch's flags.
 #pragma once
 
@@ -66,6 +70,16 @@ void register_sampling_benchmarks(Arch arch) {
             sampler.sample(u1, u2, out, kArrayLength);
           });
         });
+  benchmark::RegisterBenchmark(
+      ("sample/sample_kutlog" + at_n + "/k:3/count:1" + tail).c_str(),
+      [=](benchmark::State& state) {
+        const ScopedArch forced(arch);
+        const LobeSampler sampler(kSamplingExponent, 3, kLobeAnchor, LobeUse::microfacet);
+        run_sampler(state, [&](const float* u1, const float* u2, DirectionSamples out) {
+          for (std::size_t i = 0; i < kArrayLength; ++i)
+            sampler.sample(u1 + i, u2 + i, {out.x + i, out.y + i, out.z + i, out.pdf + i}, 1);
+        });
+      });
   benchmark::RegisterBenchmark(("sample/sample_blinn_pow" + at_n + tail).c_str(),
                                [](benchmark::State& state) {
                                  run_sampler(state, [](const float* u1, const float* u2,
