@@ -144,7 +144,14 @@ class PreparedSampler {
     {
       const detail::CellPosition<Arch> at = detail::locate<K::kFine>(u1);
       p = detail::cell_polynomial(kernel_.fine.data(), kernel_.fine_degree, K::kFine.count(), at,
-                                  [](const float* row, I cell) { return F::gather(row, cell); });
+                                  [](const float* row, I cell) -> F {
+#if XSIMD_WITH_AVX2
+                                    if constexpr (arch_of<Arch, xsimd::avx2>)
+                                      return _mm256_i32gather_ps(row, cell, sizeof(float));
+                                    else
+#endif
+                                      return F::gather(row, cell);
+                                  });
       lower = at.lower;
     }
     const F theta = xsimd::select(lower, xsimd::sqrt(u1) * p, p);
