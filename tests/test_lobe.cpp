@@ -87,7 +87,7 @@ TEST_P(LobePerArch, BaselinesAgainstTheReference) {
 TEST_P(LobePerArch, AnyCountAndOffsetWritesOnlyTheOutput) {
   const Lobe lobe(100, 3, 0.5);
   // Each t's output from whole batches only (64 is a multiple of every arch's lane count), to
-  // which every span's, loaded and stored lane by lane at its tail, must be equal.
+  // which every span's must be equal, its tail loaded and stored as a partial batch.
   std::vector<float> whole(64);
   for (std::size_t i = 0; i < whole.size(); ++i) whole[i] = 1.0f - 0.002f * float(i);
   std::vector<float> expected(whole.size());
