@@ -91,7 +91,22 @@ void register_scalar_benchmarks() {
       add(("fragment/scalar_pow_double" + at).c_str(),
           [](float t) { return float(std::pow(double(std::max(t, 0.0f)), 1000.0)); }, cosines);
     }
-  // One Blinn-Phong half vector per call, as pbrt-v2 draws it (bench/sampling_benchmarks.hpp).
+  // One half vector per call, as a path tracer draws them: LobeSampler::sample(u1, u2), and
+  // pbrt-v2's Blinn-Phong draw (bench/sampling_benchmarks.hpp).
+  for (int k : {1, 3, 5})
+    benchmark::RegisterBenchmark(
+        ("sample/sample_kutlog_scalar/n:" + std::to_string(kSamplingExponent) +
+         "/k:" + std::to_string(k))
+            .c_str(),
+        [k](benchmark::State& state) {
+          const LobeSampler sampler(kSamplingExponent, k, kLobeAnchor, LobeUse::microfacet);
+          run_sampler(state, [&](const float* u1, const float* u2, DirectionSamples out) {
+            for (std::size_t i = 0; i < kArrayLength; ++i) {
+              const SampledDirection d = sampler.sample(u1[i], u2[i]);
+              out.x[i] = d.x, out.y[i] = d.y, out.z[i] = d.z, out.pdf[i] = d.pdf;
+            }
+          });
+        });
   benchmark::RegisterBenchmark(
       ("sample/sample_blinn_pow_scalar/n:" + std::to_string(kSamplingExponent)).c_str(),
       [](benchmark::State& state) {

@@ -6,6 +6,7 @@
 //                     (n+1)/(2 pi) cos^n = (n+1)/(2 pi) u1 / cos(theta) (no second pow).
 // and, as a path tracer calls a sampler (one direction per bounce), one sample per call:
 //   sample_kutlog/n:1000/k:3/count:1/arch:<arch>: LobeSampler::sample with count 1;
+//   sample_kutlog_scalar/n:1000/k:<k> (bench/main.cpp): LobeSampler::sample(u1, u2);
 //   sample_blinn_pow_scalar/n:1000 (bench/main.cpp): pbrt-v2's, scalar, with std::pow, std::cos
 //                     and std::sin in float.
 // All write the same four arrays (x, y, z, pdf) from the same two of uniform numbers.

@@ -248,6 +248,10 @@ void LobeSampler::sample(const float* u1, const float* u2, DirectionSamples out,
   active_table().sample_lobe(kernel_, u1, u2, out, count);
 }
 
+SampledDirection LobeSampler::sample(float u1, float u2) const {
+  return active_table().sample_one(kernel_, u1, u2);
+}
+
 void shade(const Lobe& lobe, Vectors normal, Vectors to_light, Vectors to_viewer, float* out,
            std::size_t count, const std::uint8_t* mask, ShadeOptions options) {
   const detail::KernelTable& table = active_table();

@@ -58,20 +58,8 @@ struct Fit {
 
   // theta by the full series (in long double) of the cell of `layout` holding the argument.
   double theta(SamplerCells layout, bool lower, double argument) const {
-    int cell;
-    Real x;
-    if (lower) {
-      const double scaled = argument * 2 * layout.lower_cells;
-      cell = std::min(int(scaled), layout.lower_cells - 1);
-      x = Real(scaled) - cell - 0.5L;
-    } else {  // w = f 2^e, f in [1/2, 1): binade e - 1, mantissa 2 f
-      int exponent;
-      const double fraction = std::frexp(argument, &exponent);
-      const double bands = 2 * fraction * layout.bands() - layout.bands();
-      const int band = std::min(int(bands), layout.bands() - 1);
-      cell = layout.upper_cell(exponent - 1, band);
-      x = Real(bands) - band - 0.5L;
-    }
+    const auto [cell, position] = layout.position(lower, argument);
+    const Real x = position;
     const std::vector<Real>& a = series[cell];
     Real previous = 1, current = 2 * x, sum = a[0] + a[1] * current;
     for (std::size_t j = 2; j < a.size(); ++j) {

@@ -1,7 +1,7 @@
-// The SIMD lobe sampler (kutlog/sampling.hpp) per arch: its polar angle against the
-// reference's inverse CDF and its pdf against the reference's density of the direction it
-// returns (the bounds of kutlog/accuracy.hpp), the data rule, validation; and the chi-square
-// test of tests/test_sampling.cpp on its directions, on the active arch.
+// The lobe sampler (kutlog/sampling.hpp) per arch, over arrays and one sample per call: its
+// polar angle against the reference's inverse CDF and its pdf against the reference's density
+// of the direction it returns (the bounds of kutlog/accuracy.hpp), the data rule, validation;
+// and the chi-square test of tests/test_sampling.cpp on its directions, on the active arch.
 //
 // Each test was seen to fail on planted bugs (2026-12-02; the chi-square run on 3 lobes of the
 // grid for those runs):
@@ -16,6 +16,12 @@
 //   the azimuth's angle within each quadrant scaled by 1.5 / (pi/2): LobeSamplerChiSquare on
 //     all 3 lobes, and nothing else (the bounds see the polar angle and the pdf only). (Swapping
 //     two quadrants is no bug a test can see: the azimuth stays uniform.)
+// and in the one-sample path (2026-12-03, avx2, its chi-square on the lobes n = 10, Q = 0.5):
+//   the azimuth's angle within each quadrant scaled by 1.5 / (pi/2): OnePerCallChiSquare on all
+//     3 lobes, and nothing else;
+//   the pdf's power k + 1: OnePerCallGridWithinBounds, OnePerCallRandomLobesWithinBounds;
+//   NaN in u2 not carried: OnePerCallDataRule;
+//   u1 > 1/2 looked up in the next cell: both bounds tests and OnePerCallChiSquare on all 3.
 #include <gtest/gtest.h>
 
 #include <cfloat>
@@ -54,10 +60,23 @@ struct Samples {
   }
 };
 
-Samples draw(const LobeSampler& sampler, const std::vector<float>& u1,
-             const std::vector<float>& u2) {
+// The two ways to call a sampler: arrays (on the arch a test forces), or one sample per call.
+using Draw = Samples (*)(const LobeSampler&, const std::vector<float>&, const std::vector<float>&);
+
+Samples draw_arrays(const LobeSampler& sampler, const std::vector<float>& u1,
+                    const std::vector<float>& u2) {
   Samples samples(u1.size());
   sampler.sample(u1.data(), u2.data(), samples.out(), u1.size());
+  return samples;
+}
+
+Samples draw_one_per_call(const LobeSampler& sampler, const std::vector<float>& u1,
+                          const std::vector<float>& u2) {
+  Samples samples(u1.size());
+  for (std::size_t i = 0; i < u1.size(); ++i) {
+    const SampledDirection d = sampler.sample(u1[i], u2[i]);
+    samples.x[i] = d.x, samples.y[i] = d.y, samples.z[i] = d.z, samples.pdf[i] = d.pdf;
+  }
   return samples;
 }
 
@@ -76,7 +95,7 @@ struct Errors {
 };
 
 // The bounds' measure for one lobe and use, with every sample's hard properties asserted.
-void measure(const LobeCase& lobe, LobeUse use, Errors& errors) {
+void measure(Draw draw, const LobeCase& lobe, LobeUse use, Errors& errors) {
   const ref::PolarAngleDistribution polar(lobe.n, lobe.k, lobe.Q, use);
   const LobeSampler sampler(lobe.n, lobe.k, lobe.Q, use);
   const std::vector<float> u1 = dense_u1();
@@ -102,19 +121,14 @@ void expect_within_bounds(const Errors& errors, const std::string& what) {
   EXPECT_LE(errors.pdf, kSamplerBound.pdf_error) << what;
 }
 
-class LobeSamplerPerArch : public testing::TestWithParam<Arch> {
- protected:
-  ScopedArch forced{GetParam()};
-};
-
 // The grid, and the bounds asserted both ways: met, and not loose (the largest error seen is
 // at least a quarter of the bound), so that neither can drift from the code.
-TEST_P(LobeSamplerPerArch, GridWithinBounds) {
+void grid_within_bounds(Draw draw) {
   Errors largest;
   for (const LobeCase& lobe : sampling_grid())
     for (LobeUse use : kUses) {
       Errors errors;
-      ASSERT_NO_FATAL_FAILURE(measure(lobe, use, errors));
+      ASSERT_NO_FATAL_FAILURE(measure(draw, lobe, use, errors));
       testing::Message what;
       what << use_name(use) << " n=" << lobe.n << " k=" << lobe.k << " Q=" << lobe.Q;
       expect_within_bounds(errors, what.GetString());
@@ -127,7 +141,7 @@ TEST_P(LobeSamplerPerArch, GridWithinBounds) {
 }
 
 // Off the grid: n log-uniform in [0.5, 10^6] (below k too), k in 1..8, Q in [0.01, 0.99].
-TEST_P(LobeSamplerPerArch, RandomLobesWithinBounds) {
+void random_lobes_within_bounds(Draw draw) {
   std::mt19937_64 engine(14);
   std::uniform_real_distribution<double> log_n(std::log(0.5), std::log(1e6)), anchor(0.01, 0.99);
   std::uniform_int_distribution<int> power(1, 8);
@@ -135,7 +149,7 @@ TEST_P(LobeSamplerPerArch, RandomLobesWithinBounds) {
     const LobeCase lobe{std::exp(log_n(engine)), power(engine), anchor(engine)};
     const LobeUse use = kUses[trial % 2];
     Errors errors;
-    ASSERT_NO_FATAL_FAILURE(measure(lobe, use, errors));
+    ASSERT_NO_FATAL_FAILURE(measure(draw, lobe, use, errors));
     testing::Message what;
     what << use_name(use) << " n=" << lobe.n << " k=" << lobe.k << " Q=" << lobe.Q;
     expect_within_bounds(errors, what.GetString());
@@ -143,8 +157,8 @@ TEST_P(LobeSamplerPerArch, RandomLobesWithinBounds) {
 }
 
 // u below 0 counts as 0, at or above 1 as the largest float below 1, NaN gives NaN in every
-// output; every count gives what the whole array gives (the tails are partial batches).
-TEST_P(LobeSamplerPerArch, DataRuleAndTails) {
+// output.
+void data_rule(Draw draw) {
   const LobeSampler sampler(100, 3, 0.5, LobeUse::microfacet);
   const float below_one = std::nextafter(1.0f, 0.0f);
   const std::vector<float> u1 = {-1.0f, -0.0f, 1.0f, 2.0f, INFINITY, -INFINITY, kNaN, 0.3f, 0.3f};
@@ -166,9 +180,29 @@ TEST_P(LobeSamplerPerArch, DataRuleAndTails) {
     EXPECT_EQ(samples.z[i], expected.z[i]) << i;
     EXPECT_EQ(samples.pdf[i], expected.pdf[i]) << i;
   }
+}
+
+class LobeSamplerPerArch : public testing::TestWithParam<Arch> {
+ protected:
+  ScopedArch forced{GetParam()};
+};
+
+TEST_P(LobeSamplerPerArch, GridWithinBounds) { grid_within_bounds(draw_arrays); }
+TEST_P(LobeSamplerPerArch, RandomLobesWithinBounds) { random_lobes_within_bounds(draw_arrays); }
+TEST_P(LobeSamplerPerArch, OnePerCallGridWithinBounds) { grid_within_bounds(draw_one_per_call); }
+TEST_P(LobeSamplerPerArch, OnePerCallRandomLobesWithinBounds) {
+  random_lobes_within_bounds(draw_one_per_call);
+}
+TEST_P(LobeSamplerPerArch, OnePerCallDataRule) { data_rule(draw_one_per_call); }
+
+// The data rule, and every count gives what the whole array gives (the tails are partial
+// batches).
+TEST_P(LobeSamplerPerArch, DataRuleAndTails) {
+  ASSERT_NO_FATAL_FAILURE(data_rule(draw_arrays));
+  const LobeSampler sampler(100, 3, 0.5, LobeUse::microfacet);
   std::vector<float> v1(37), v2(37);
   for (std::size_t i = 0; i < v1.size(); ++i) v1[i] = float(i) / 37, v2[i] = float(i * 7 % 37) / 37;
-  const Samples whole = draw(sampler, v1, v2);
+  const Samples whole = draw_arrays(sampler, v1, v2);
   for (std::size_t count = 0; count <= v1.size(); ++count) {
     Samples part(v1.size());
     sampler.sample(v1.data(), v2.data(), part.out(), count);
@@ -182,10 +216,10 @@ TEST_P(LobeSamplerPerArch, DataRuleAndTails) {
 INSTANTIATE_TEST_SUITE_P(Arch, LobeSamplerPerArch, testing::ValuesIn(supported_archs()),
                          arch_test_name);
 
-// ---- Chi-square, on the active arch ---------------------------------------------------------
+// ---- Chi-square, on the active arch, in both call shapes -----------------------------------
 
 constexpr int kDraws = 1'000'000;
-constexpr int kChiSquareCases = 45 * 2;
+constexpr int kChiSquareCases = 45 * 2 * 2;  // the grid's lobes and uses, in both call shapes
 constexpr int kResAlpha = 32, kResPsi = 64;
 
 // kDraws uniform numbers in [0, 1) as floats.
@@ -196,12 +230,10 @@ std::vector<float> uniform_floats(std::uint64_t seed) {
   return u;
 }
 
-class LobeSamplerChiSquare : public testing::TestWithParam<LobeCase> {};
-
 // The half vectors (microfacet) and the lobe's directions (phong), in their own frames, binned
 // over the lobe's support against the reference's pdfs.
-TEST_P(LobeSamplerChiSquare, DirectionsMatchReferencePdf) {
-  const auto [n, k, Q] = GetParam();
+void directions_match_reference_pdf(Draw draw, const LobeCase& lobe) {
+  const auto [n, k, Q] = lobe;
   const ref::KutlogMicrofacet microfacet(n, k, Q);
   const ref::KutlogPhong phong(n, k, Q);
   const double G = microfacet.lobe().integration_limit();
@@ -223,7 +255,18 @@ TEST_P(LobeSamplerChiSquare, DirectionsMatchReferencePdf) {
   }
 }
 
+class LobeSamplerChiSquare : public testing::TestWithParam<LobeCase> {};
+TEST_P(LobeSamplerChiSquare, DirectionsMatchReferencePdf) {
+  directions_match_reference_pdf(draw_arrays, GetParam());
+}
 INSTANTIATE_TEST_SUITE_P(Grid, LobeSamplerChiSquare, testing::ValuesIn(sampling_grid()),
+                         lobe_case_name);
+
+class LobeSamplerOnePerCallChiSquare : public testing::TestWithParam<LobeCase> {};
+TEST_P(LobeSamplerOnePerCallChiSquare, DirectionsMatchReferencePdf) {
+  directions_match_reference_pdf(draw_one_per_call, GetParam());
+}
+INSTANTIATE_TEST_SUITE_P(Grid, LobeSamplerOnePerCallChiSquare, testing::ValuesIn(sampling_grid()),
                          lobe_case_name);
 
 // ---- Validation ------------------------------------------------------------------------------

@@ -1,8 +1,9 @@
 // kutlog/sampling.hpp: importance sampling of the normalized F_kutlog lobe, in SIMD, for one
-// material: arrays of uniform numbers in, directions and their pdf out.
+// material: arrays of uniform numbers in, directions and their pdf out; or one sample per call.
 //
 //   const kutlog::LobeSampler sampler(n, k, Q, kutlog::LobeUse::microfacet);  // once
 //   sampler.sample(u1, u2, {x, y, z, pdf}, count);                            // per batch
+//   const kutlog::SampledDirection d = sampler.sample(u1, u2);               // per bounce
 //
 // The two uses of kutlog/sampling_reference.hpp (the spec): microfacet half vectors wm with
 // pdf D(wm) cos(theta_m), in the frame whose z is the normal; phong directions with pdf
@@ -35,8 +36,11 @@
 // std::invalid_argument naming n beyond).
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <bit>
 #include <cstddef>
+#include <cstdint>
 #include <type_traits>
 
 #include "kutlog/api.hpp"
@@ -61,6 +65,31 @@ struct SamplerCells {
   // The cell of u1 > 1/2 whose w lies in band `band` of binade 2^exponent.
   constexpr int upper_cell(int exponent, int band) const {
     return lower_cells + (-2 - exponent) * bands() + band;
+  }
+  // The cell of argument = u1 <= 1/2 (lower) or of argument = w = 1 - u1 in [2^-24, 1/2), and
+  // the argument's x in it, in double: for the setup and the one-sample path (the SIMD kernels
+  // find the same from a float's bits). A template on the caller's arch, as kutlog/simd/'s
+  // helpers are: each arch's copy, compiled with its flags, is a symbol of its own.
+  struct Position {
+    int cell;
+    double x;
+  };
+  template <class Arch = void>
+  Position position(bool lower, double argument) const {
+    if (lower) {
+      const double scaled = argument * (2 * lower_cells);
+      const int cell = std::min(int(scaled), lower_cells - 1);
+      return {cell, scaled - cell - 0.5};
+    }
+    constexpr std::uint64_t kMantissaBits = (std::uint64_t(1) << 52) - 1;
+    const auto bits = std::bit_cast<std::uint64_t>(argument);
+    // w = 2^exponent m, m in [1, 2); (m - 1) bands() = band + 1/2 + x.
+    const int exponent = int(bits >> 52) - 1023;
+    const double banded =
+        (std::bit_cast<double>((bits & kMantissaBits) | std::bit_cast<std::uint64_t>(1.0)) - 1) *
+        bands();
+    const int band = std::min(int(banded), bands() - 1);
+    return {upper_cell(exponent, band), banded - band - 0.5};
   }
 };
 
@@ -94,6 +123,11 @@ struct DirectionSamples {
   float* pdf;  // over solid angle
 };
 
+// One direction and its pdf (over solid angle).
+struct SampledDirection {
+  float x, y, z, pdf;
+};
+
 class LobeSampler {
  public:
   // The parameters in Lobe's order, then the use. Throws std::invalid_argument naming the
@@ -116,6 +150,17 @@ class LobeSampler {
 
   // For i < count: a direction from (u1[i], u2[i]) and its pdf, into out.x[i] ... out.pdf[i].
   void sample(const float* u1, const float* u2, DirectionSamples out, std::size_t count) const;
+
+  // One direction from (u1, u2) and its pdf: a path tracer's one sample per bounce. Scalar
+  // code in double precision, each output rounded once to float, the same for every arch and
+  // every compiler flag: the contract and the data rule above, asserted by the same tests.
+  // For many samples at once the array call is faster (see the README's sampling section).
+  SampledDirection sample(float u1, float u2) const;
+  // Floats only, as the arrays' inputs are: a double u1 just below 1 would round to 1 without
+  // a word. Convert explicitly, sample(float(u1), float(u2)).
+  template <class U1, class U2>
+    requires(!std::is_same_v<U1, float> || !std::is_same_v<U2, float>)
+  SampledDirection sample(U1, U2) const = delete;
 
  private:
   double n_, Q_, limit_, fit_error_;

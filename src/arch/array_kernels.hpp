@@ -396,6 +396,7 @@ KernelTable make_kernel_table() {
   table.shade_directions = &shade_directions_array<Arch>;
   table.shade_cosines = &shade_cosines_array<Arch>;
   table.sample_lobe = &sample_lobe_array<Arch>;
+  table.sample_one = &simd::one_sample::sample<Arch>;
   table.schlick = [](const float* t, float n, float* out, std::size_t count) {
     const F exponent(n);
     map_arrays<Arch, 1>([&](F v) { return simd::schlick(v, exponent); }, {t}, out, count);

@@ -48,6 +48,7 @@ using PerLaneArrayKernel = void (*)(const PerLaneKernel&, bool normalized, const
 
 using SampleArrayKernel = void (*)(const SamplerKernel&, const float* u1, const float* u2,
                                    DirectionSamples, std::size_t);
+using SampleOneKernel = SampledDirection (*)(const SamplerKernel&, float u1, float u2);
 
 struct KernelTable {
   bool fused_fma;  // which of a Lobe's kernels this arch runs
@@ -62,6 +63,7 @@ struct KernelTable {
   ShadeDirectionsKernel shade_directions;
   ShadeCosinesKernel shade_cosines;
   SampleArrayKernel sample_lobe;
+  SampleOneKernel sample_one;
 };
 
 // The table of one arch: specialized by src/arch/kernels.cpp, which CMake compiles once per

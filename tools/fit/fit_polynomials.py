@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Fits the polynomial cores of kutlog's SIMD math kernels (include/kutlog/simd/math.hpp).
+"""Fits the polynomial cores of kutlog's SIMD math kernels (include/kutlog/simd/constants.hpp).
 
 Offline tool, not part of the build: needs python3-mpmath (Debian). Each core is a smooth
 function g on an interval, approximated by a Chebyshev fit (near-minimax) of the given degree,
