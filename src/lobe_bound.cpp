@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <numbers>
 
@@ -72,6 +73,43 @@ HornerBound horner_bound(const Coefficients& c, int degree, Interval x, Rounding
   return {partial.magnitude(), error, partial.lo};
 }
 
+// The same bounds for Estrin's scheme as the scalar path runs it (LobeKernel::with_q): the
+// sum of c[first + i] x^i over i < count is the lowest bit_floor(count - 1) terms plus
+// x^(bit_floor(count - 1)) times the rest, x's powers by repeated squaring.
+struct Evaluated {
+  Interval exact;  // where the exact value lies
+  double error;    // of the computed value against it
+};
+using Powers = std::array<Evaluated, std::bit_width(unsigned(LobeKernel::kMaxDegree))>;
+Evaluated estrin_node(const Coefficients& c, int first, int count, const Powers& powers,
+                      Rounding round, bool product_rounded) {
+  if (count == 1) return {{c[first], c[first]}, 0};
+  const int low = int(std::bit_floor(unsigned(count - 1)));
+  const Evaluated a = estrin_node(c, first, low, powers, round, product_rounded);
+  const Evaluated b = estrin_node(c, first + low, count - low, powers, round, product_rounded);
+  const Evaluated& power = powers[std::size_t(std::countr_zero(unsigned(low)))];
+  const Interval product = times(power.exact, b.exact);
+  // |P B - p b| <= |P - p| |B| + |p| |B - b|, P and B the computed factors.
+  double error = power.error * (b.exact.magnitude() + b.error) + power.exact.magnitude() * b.error;
+  if (product_rounded) error += round(product.magnitude() + error);
+  const Interval sum{a.exact.lo + product.lo, a.exact.hi + product.hi};
+  error += a.error;
+  return {sum, error + round(sum.magnitude() + error)};
+}
+HornerBound estrin_bound(const Coefficients& c, int degree, Interval x, Rounding round,
+                         bool product_rounded) {
+  Powers powers{};  // x^(2^j), as far as the degree needs
+  powers[0] = {x, 0};
+  for (std::size_t j = 1; (1 << j) <= degree; ++j) {
+    const Evaluated& p = powers[j - 1];
+    const double error = p.error * (2 * p.exact.magnitude() + p.error);
+    const Interval square = times(p.exact, p.exact);
+    powers[j] = {square, error + round(square.magnitude() + error)};
+  }
+  const Evaluated q = estrin_node(c, 0, degree + 1, powers, round, product_rounded);
+  return {q.exact.magnitude(), q.error, q.exact.lo};
+}
+
 }  // namespace
 
 LobeProfile lobe_profile(const LobeShape& shape, double w_max) {
@@ -138,10 +176,13 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
     const double x_lo = profile.w[j] - w_center, x_hi = w_hi - w_center;
     const Interval x{x_lo - widening * std::fabs(x_lo), x_hi + widening * std::fabs(x_hi)};
     const double sigma = x.magnitude();
-    // Horner's rule in full, or down to r, q = c_0 + s r, with the last step exact.
-    const HornerBound horner = compensated
-                                   ? horner_bound(above_constant, degree - 1, x, round, false)
-                                   : horner_bound(stored, degree, x, round, product_rounded);
+    // Horner's rule in full, or down to r, q = c_0 + s r, with the last step exact; the
+    // scalar path runs Estrin's scheme.
+    const HornerBound horner =
+        compensated ? horner_bound(above_constant, degree - 1, x, round, false)
+        : arithmetic == Arithmetic::scalar
+            ? estrin_bound(stored, degree, x, round, product_rounded)
+            : horner_bound(stored, degree, x, round, product_rounded);
     double coefficient_error = 0, slope = 0, sigma_power = 1;  // slope: sum i |c_i| sigma^i
     for (int i = 0; i <= degree; ++i, sigma_power *= sigma) {
       coefficient_error += rounding[i] * sigma_power;

@@ -2,6 +2,9 @@
 // the same bounds and hard contract as the arrays. CMake builds this file twice: with the
 // compiler's default flags (kutlog-test-lobe-scalar) and with FMA and -ffp-contract=fast
 // (kutlog-test-lobe-scalar-fma), as a user might: the contract must hold under both.
+// Estrin's scheme (kutlog/lobe.hpp) seen failing on planted bugs (2026-12-03): one squaring of
+// x too few in the unrolled tree fails AccuracyGridEvery97thFloat and RandomLobesWithinBounds;
+// x for x^(2^j) in the level-by-level loop (degree above 12) fails RandomLobesDensely.
 #include <gtest/gtest.h>
 
 #include <cmath>
