@@ -271,6 +271,13 @@ INSTANTIATE_TEST_SUITE_P(Grid, LobeSamplerOnePerCallChiSquare, testing::ValuesIn
 
 // ---- Validation ------------------------------------------------------------------------------
 
+// The one-sample call takes floats only, as the arrays' inputs are: a double u1 just below 1
+// would be rounded to 1 without a word.
+template <class U1, class U2>
+concept SamplesOne = requires(const LobeSampler& sampler, U1 u1, U2 u2) { sampler.sample(u1, u2); };
+static_assert(SamplesOne<float, float> && SamplesOne<const float&, float>);
+static_assert(!SamplesOne<double, float> && !SamplesOne<float, double> && !SamplesOne<int, int>);
+
 TEST(LobeSampler, InvalidArgumentsNameTheParameter) {
   expect_invalid([] { LobeSampler(-1, 3, 0.5, LobeUse::microfacet); }, "n", "finite and > 0");
   expect_invalid([] { LobeSampler(10, 0, 0.5, LobeUse::phong); }, "k", "integer in [1, 64]");
