@@ -211,7 +211,8 @@ inline double mul_add(double a, double b, double c) {
 // c[0] + c[1] u + c[2] u^2 + c[3] u^3 in pairs (Estrin's scheme): two steps deep, not three.
 template <class Arch>
 inline double pairwise_cubic(double u, const std::array<float, 4>& c) {
-  return mul_add<Arch>(u * u, mul_add<Arch>(c[3], u, c[2]), mul_add<Arch>(c[1], u, c[0]));
+  const auto at = [&](std::size_t i) { return double(c[i]); };
+  return mul_add<Arch>(u * u, mul_add<Arch>(at(3), u, at(2)), mul_add<Arch>(at(1), u, at(0)));
 }
 
 // sin and cos of |r| <= pi/4 by the polynomial cores of kutlog's sin and cos: within about
@@ -265,13 +266,13 @@ inline double polar_angle(const SamplerKernel& kernel, float u1) {
   using K = SamplerKernel;
   // Both sides' cells are found and one is selected: u1 falls on either side at random.
   const bool lower = u1 <= 0.5f;
-  const SamplerCells::Position below = K::kFine.position<Arch>(true, u1),
+  const SamplerCells::Position below = K::kFine.position<Arch>(true, double(u1)),
                                above = K::kFine.position<Arch>(false, 1.0 - double(u1));
   const int cell = lower ? below.cell : above.cell;
   const double x = lower ? below.x : above.x;
   constexpr int kStride = K::kFine.count();
   const float* coefficient = kernel.fine.data() + kernel.fine_degree * kStride + cell;
-  double p = *coefficient;
+  double p = double(*coefficient);
   for (int j = kernel.fine_degree; j-- > 0;)
     p = mul_add<Arch>(p, x, double(*(coefficient -= kStride)));
   return std::clamp((lower ? std::sqrt(double(u1)) : 1.0) * p, 0.0, double(kernel.limit));
