@@ -189,9 +189,10 @@ class PreparedSampler {
 // PreparedSampler's steps for one (u1, u2), in double: a path tracer's one direction per
 // bounce, where a batch would compute one lane of many. Double leaves the float roundings of
 // the batch code out (the bounds' errors are the fit's and the outputs' roundings). The arch
-// brings its FMA only: one sample's cost is a chain of dependent multiply-adds (0.8x the time
-// fused on AVX2). Helpers are templates on the arch, as everything here: each arch's TU
-// compiles its own.
+// brings its FMA only: one sample's cost is a chain of dependent multiply-adds (0.81x the time
+// fused, on AVX-512). Helpers are templates on the arch, as everything here: each arch's TU
+// compiles its own (so integer_power below is not detail::integer_power<double>, which every
+// arch's TU would instantiate under one name, compiled with different flags).
 namespace one_sample {
 
 struct SinCos {
