@@ -152,9 +152,10 @@ class LobeSampler {
   void sample(const float* u1, const float* u2, DirectionSamples out, std::size_t count) const;
 
   // One direction from (u1, u2) and its pdf: a path tracer's one sample per bounce. Scalar
-  // code in double precision, each output rounded once to float, the same for every arch and
-  // every compiler flag: the contract and the data rule above, asserted by the same tests.
-  // For many samples at once the array call is faster (see the README's sampling section).
+  // code in double precision, each output rounded once to float, dispatched to the arch's
+  // build for its fused multiply-add (out of line: the caller's flags do not reach it): the
+  // contract and the data rule above, asserted per arch by the same tests. For many samples
+  // at once the array call is faster (see the README's sampling section).
   SampledDirection sample(float u1, float u2) const;
   // Floats only, as the arrays' inputs are: a double u1 just below 1 would round to 1 without
   // a word. Convert explicitly, sample(float(u1), float(u2)).
