@@ -117,30 +117,32 @@ std::atomic<int> forced_arch{kNotForced};
 const detail::KernelTable& table_of(Arch arch) { return entry(arch).kernel_table(); }
 
 // The active arch's table, so that a call reads one pointer (a one-element eval spent two
-// fifths of its time going through active_arch() to its table): set by force_arch, cleared by
-// reset_arch, filled on first use after either. Stored with release and loaded with acquire:
-// the thread that fills it may be the one that built the table (a function-local static), and
-// a relaxed load would let another thread read the table through the pointer before it sees
-// the table's contents (a data race ThreadSanitizer reported, tests/test_threads.cpp; on
-// x86-64 an acquire load is the same instruction, on AArch64 an ldar instead of an ldr).
-std::atomic<const detail::KernelTable*> active_table_cache{nullptr};
-
+// fifths of its time going through active_arch() to its table), as its LobeArrayKernels: what
+// Lobe's inline array eval reads (kutlog/lobe.hpp). Set by force_arch, cleared by reset_arch,
+// filled on first use after either. Stored with release and loaded with acquire: the thread
+// that fills it may be the one that built the table (a function-local static), and a relaxed
+// load would let another thread read the table through the pointer before it sees the
+// table's contents (a data race ThreadSanitizer reported, tests/test_threads.cpp; on x86-64
+// an acquire load is the same instruction, on AArch64 an ldar instead of an ldr).
 [[gnu::noinline, gnu::cold]] const detail::KernelTable& fill_active_table() {
   const detail::KernelTable* table = &table_of(active_arch());
-  const detail::KernelTable* expected = nullptr;  // a force_arch since then wins
-  return active_table_cache.compare_exchange_strong(expected, table, std::memory_order_acq_rel,
-                                                    std::memory_order_acquire)
+  const detail::LobeArrayKernels* expected = nullptr;  // a force_arch since then wins
+  return detail::active_lobe_loops.compare_exchange_strong(
+             expected, table, std::memory_order_acq_rel, std::memory_order_acquire)
              ? *table
-             : *expected;
+             : static_cast<const detail::KernelTable&>(*expected);
 }
 
 // Inlined into every entry point below: one load and one test.
 inline const detail::KernelTable& active_table() {
-  const detail::KernelTable* table = active_table_cache.load(std::memory_order_acquire);
-  return table ? *table : fill_active_table();
+  const detail::LobeArrayKernels* loops =
+      detail::active_lobe_loops.load(std::memory_order_acquire);
+  return loops ? static_cast<const detail::KernelTable&>(*loops) : fill_active_table();
 }
 
 }  // namespace
+
+std::atomic<const detail::LobeArrayKernels*> detail::active_lobe_loops{nullptr};
 
 std::string_view arch_name(Arch arch) { return entry(arch).name; }
 
@@ -168,19 +170,19 @@ Arch active_arch() {
 void force_arch(Arch arch) {
   require_supported(arch, "forced");
   forced_arch.store(static_cast<int>(arch), std::memory_order_relaxed);
-  active_table_cache.store(&table_of(arch), std::memory_order_release);
+  detail::active_lobe_loops.store(&table_of(arch), std::memory_order_release);
 }
 
 void force_arch(std::string_view name) { force_arch(parse_arch(name)); }
 
 void reset_arch() {
   forced_arch.store(kNotForced, std::memory_order_relaxed);
-  active_table_cache.store(nullptr, std::memory_order_relaxed);
+  detail::active_lobe_loops.store(nullptr, std::memory_order_relaxed);
 }
 
 const detail::LobeArrayKernels* detail::fused_lobe_array_kernels() {
   for (Arch arch : kCompiledArchs)
-    if (arch_supported(arch) && table_of(arch).fused_fma) return &table_of(arch).kutlog_lobe;
+    if (arch_supported(arch) && table_of(arch).fused_fma) return &table_of(arch);
   return nullptr;
 }
 
@@ -208,22 +210,11 @@ void pow_u10(const float* x, float y, float* out, std::size_t count) {
 }
 }  // namespace math
 
-void Lobe::eval(const float* t, float* out, std::size_t count, Variant variant,
-                Normalization normalization) const {
-  // Written so that the common call saves no register and ends in a jump to the kernel: the
-  // first call (and the first after reset_arch) and an overflowing coef (throws) go out of line.
-  const detail::KernelTable* table = active_table_cache.load(std::memory_order_acquire);
-  if (!table || (normalization == Normalization::exact_coef && !coef_fits_float_)) [[unlikely]]
-    return eval_out_of_line(t, out, count, variant, normalization);
-  const int index = kernel_index(variant, normalization,
-                                 table->fused_fma ? Arithmetic::fused : Arithmetic::unfused);
-  table->kutlog_lobe.by_slot[array_slots_[index]](kernels_[index], t, out, count);
-}
 void Lobe::eval_out_of_line(const float* t, float* out, std::size_t count, Variant variant,
                             Normalization normalization) const {
   const detail::KernelTable& table = active_table();
   const LobeKernel& chosen = kernel(variant, normalization, table.fused_fma);
-  table.kutlog_lobe.of(chosen)(chosen, t, out, count);
+  table.of(chosen)(chosen, t, out, count);
 }
 void PerLaneLobe::eval(const float* t, const float* n, float* out, std::size_t count,
                        Normalization normalization) const {

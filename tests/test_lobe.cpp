@@ -2,7 +2,9 @@
 // reference, the data rule, validation, and the baselines.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <optional>
@@ -107,6 +109,46 @@ TEST_P(LobePerArch, AnyCountAndOffsetWritesOnlyTheOutput) {
     }
 }
 
+
+// A span of at most one batch runs its own straight-line code, not the loop the exhaustive
+// sweeps go through: each of its kernels (every degree, finish and clamp the lobes below
+// reach, both variants and normalizations) must give, bit for bit, what a long array gives.
+TEST_P(LobePerArch, ShortSpansEqualTheLongArrayForEveryKernel) {
+  std::vector<LobeCase> lobes = {{100, 3, 0.5}, {1000, 5, 0.5}, {10, 1, 0.9}, {4000, 2, 0.3}};
+  for (const LobeCase& c : random_lobes(24, 2031)) lobes.push_back(c);
+  constexpr std::size_t kLongest = 40;  // past two batches of every arch
+  std::vector<float> t(kLongest);
+  for (const LobeCase& c : lobes) {
+    const Lobe lobe(c.n, c.k, c.Q);
+    // Over the support and off it, t = 1 and above, and NaN.
+    const double cut = lobe.cutoff_angle() >= ref::pi / 2 ? -0.1 : std::cos(lobe.cutoff_angle());
+    for (std::size_t i = 0; i < kLongest; ++i)
+      t[i] = float(cut + (1.02 - cut) * double(i) / double(kLongest - 3));
+    t[kLongest / 2] = kNaN;
+    for (Variant variant : {Variant::precise, Variant::fast})
+      for (Normalization normalization : {Normalization::none, Normalization::exact_coef}) {
+        // t four times over in one long array: its first kLongest outputs from whole batches.
+        std::vector<float> whole(4 * kLongest), span(kLongest);
+        for (std::size_t i = 0; i < whole.size(); ++i) whole[i] = t[i % kLongest];
+        lobe.eval(whole.data(), whole.data(), whole.size(), variant, normalization);
+        for (std::size_t count = 1; count <= kLongest; ++count) {
+          lobe.eval(t.data(), span.data(), count, variant, normalization);
+          for (std::size_t i = 0; i < count; ++i) {
+            const auto context = [&] {
+              return ::testing::PrintToString(c) + ", count " + std::to_string(count) + ", t " +
+                     std::to_string(t[i]);
+            };
+            if (std::isnan(whole[i])) {  // the data rule promises NaN, not its sign bit
+              ASSERT_TRUE(std::isnan(span[i])) << context();
+              continue;
+            }
+            ASSERT_EQ(std::bit_cast<std::uint32_t>(span[i]), std::bit_cast<std::uint32_t>(whole[i]))
+                << context();
+          }
+        }
+      }
+  }
+}
 
 TEST_P(LobePerArch, PerLaneMaterialsWithinBoundsAndBetweenZeroAndPeak) {
   unsigned seed = 17;

@@ -37,6 +37,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -176,6 +177,34 @@ struct LobeKernel {
   }
 };
 
+namespace detail {
+// The array loops of one arch's lobe kernels, by slot: for the polynomial form of each degree
+// up to kMaxUnrolledDegree, one per finish (plain, split, compensated: simd::LobeFinish), then
+// plain and split without the clamp (LobeKernel::clamped; compensated kernels keep it),
+// unrolled and testing no flag; in the last slot, one for any kernel. A Lobe computes its
+// kernels' slots at setup, so that a call picks its loop with one load. (FMA-less archs are
+// never given a compensated kernel: Lobe keeps those for Arithmetic::fused.) Filled per arch
+// by src/arch/array_kernels.hpp; here because Lobe's array eval reads it inline.
+using LobeArrayKernel = void (*)(const LobeKernel&, const float*, float*, std::size_t);
+struct LobeArrayKernels {
+  static constexpr int kMaxUnrolledDegree = 16;
+  static constexpr int kSlotsPerDegree = 5;
+  static constexpr int kSlots = kSlotsPerDegree * (kMaxUnrolledDegree + 1) + 1;
+  bool fused_fma;  // which of a Lobe's kernels this arch runs
+  LobeArrayKernel by_slot[kSlots];
+  static constexpr int slot_of(const LobeKernel& kernel) {
+    if (kernel.form != LobeKernel::Form::polynomial || kernel.degree > kMaxUnrolledDegree)
+      return kSlots - 1;
+    const int finish = kernel.compensated ? 2 : kernel.scale_lo != 0 ? 1 : 0;
+    return kSlotsPerDegree * kernel.degree + (kernel.clamped || finish == 2 ? finish : 3 + finish);
+  }
+  LobeArrayKernel of(const LobeKernel& kernel) const { return by_slot[slot_of(kernel)]; }
+};
+// The active arch's loops (src/dispatch.cpp): null before the first array call and after
+// reset_arch; stored with release, loaded with acquire (the tables are built on first use).
+extern std::atomic<const LobeArrayKernels*> active_lobe_loops;
+}  // namespace detail
+
 class Lobe {
  public:
   // Throws std::invalid_argument naming the parameter and its range: n finite > 0, k integer
@@ -209,9 +238,19 @@ class Lobe {
     requires(std::is_arithmetic_v<T> && !std::is_same_v<T, float>)
   float eval(T, Variant = Variant::precise, Normalization = Normalization::none) const = delete;
 
-  // out[i] = F(t[i]), or coef_exact * F(t[i]).
+  // out[i] = F(t[i]), or coef_exact * F(t[i]). Inline up to one indirect call of the active
+  // arch's loop for this kernel: a span of 16 spent half its time getting there out of line,
+  // and a call site's constant variant and normalization fold the kernel's index.
   void eval(const float* t, float* out, std::size_t count, Variant variant = Variant::precise,
-            Normalization normalization = Normalization::none) const;
+            Normalization normalization = Normalization::none) const {
+    const detail::LobeArrayKernels* loops =
+        detail::active_lobe_loops.load(std::memory_order_acquire);
+    if (!loops || (normalization == Normalization::exact_coef && !coef_fits_float_)) [[unlikely]]
+      return eval_out_of_line(t, out, count, variant, normalization);
+    const int index = kernel_index(variant, normalization,
+                                   loops->fused_fma ? Arithmetic::fused : Arithmetic::unfused);
+    loops->by_slot[array_slots_[index]](kernels_[index], t, out, count);
+  }
 
   // The precomputed kernel of a variant, for users who inline kutlog/simd/lobe.hpp: each was
   // fitted and checked for the arithmetic it will run on, with fused multiply-add (AVX2,
@@ -228,7 +267,7 @@ class Lobe {
 
  private:
   [[noreturn]] void throw_coef_overflow() const;
-  // eval's first call, and its throw (src/dispatch.cpp).
+  // The array eval's first call (and first after reset_arch), and its throw (src/dispatch.cpp).
   [[gnu::cold]] void eval_out_of_line(const float* t, float* out, std::size_t count,
                                       Variant variant, Normalization normalization) const;
 
@@ -244,7 +283,7 @@ class Lobe {
   }
   LobeKernel kernels_[2 * 2 * 3];
   // The slot of each SIMD kernel's array loop in the per-arch tables
-  // (src/arch/kernel_table.hpp), computed at setup: a call reads it instead of testing the
+  // (detail::LobeArrayKernels), computed at setup: a call reads it instead of testing the
   // kernel's form, degree and finish.
   std::uint8_t array_slots_[2 * 2 * 3] = {};
 };
