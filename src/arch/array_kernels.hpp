@@ -145,12 +145,12 @@ template <class Arch, int kDegree, simd::LobeFinish kFinish, bool kClamped>
                       count, 1.0f);
 }
 // A span of at most one batch (a renderer's span of 16 on AVX-512) runs straight through, no
-// loop: its own PreparedLobe, so that the compiler reads each coefficient where it is used
-// (AVX-512's embedded broadcast) instead of broadcasting all of them first, and with AVX-512 a
-// full batch goes through the lane mask as a partial one does. Longer spans jump to the loop,
-// where the broadcasts are paid once: at 4096 floats, embedded broadcasts in the loop cost
-// 1.15x the time. Alternated against the loop alone (AVX-512, n = 1000, k = 3 and 5, three
-// rounds): count 16 0.94x to 0.98x the time, count 1 0.92x to 0.97x, counts 157 and 4096
+// loop; longer spans jump to the loop. A whole batch is loaded and stored whole, never through
+// the lane mask: Zen 4 forwards no masked store to a later load, nor a store to a masked load
+// (18 to 20 cycles each, measured), and a caller who reads back the span it just shaded, as
+// shade() does, would wait for it (shade's spans of 16 took 1.2x the time with masked whole
+// batches). Alternated against the loop alone (AVX-512, n = 1000, k = 3 and 5, fastest of
+// three rounds): count 16 0.92x to 0.98x the time, count 1 0.96x to 1.0x, 157 and 4096
 // unchanged.
 template <class Arch, int kDegree, simd::LobeFinish kFinish = simd::LobeFinish::any,
           bool kClamped = true>
@@ -159,10 +159,8 @@ void kutlog_lobe_array(const LobeKernel& kernel, const float* t, float* out, std
   if (count > F::size)
     return kutlog_lobe_loop<Arch, kDegree, kFinish, kClamped>(kernel, t, out, count);
   const simd::PreparedLobe<Arch, kDegree, kFinish, kClamped> lobe(kernel);
-  if constexpr (!std::is_base_of_v<xsimd::avx512f, Arch>) {
-    if (count == F::size) return lobe(F::load_unaligned(t)).store_unaligned(out);
-    if (count == 0) return;  // SSE4.1's partial load reads t[0]
-  }
+  if (count == F::size) return lobe(F::load_unaligned(t)).store_unaligned(out);
+  if (count == 0) return;  // SSE4.1's partial load reads t[0]
   store_partial<Arch>(Arch{}, out, lobe(load_partial<Arch>(Arch{}, t, count, 1.0f)), count);
 }
 template <class Arch>
