@@ -18,15 +18,15 @@ namespace kutlog::detail {
 template <class Arch>
 using floats_of = xsimd::batch<float, Arch>;
 
-// The first `count` (< N; AVX-512's also N, and every arch's but SSE4.1's 0) lanes of an
-// array, `padding` in the others, and their store. No load or store leaves the arrays. AVX-512
-// moves them with a lane mask; AVX2 loads with one (masked lanes never touch memory) but
-// stores in halves, 4, 2 and 1 floats by the bits of count, as SSE4.1 both loads and stores: AMD's AVX2 lane-masked store took about 4 ns here, and SSE4.1's
-// way through a local buffer (its scalar writes read back as one vector, which no store
-// forwards) cost a one-element call 25 to 30 ns, against 7 to 16 ns now. Other archs (NEON)
-// go through the buffer. Overloads on the arch's tag, the most derived chosen, so that only
-// their code has a buffer (an aligned buffer anywhere in a function costs every call a stack
-// realignment).
+// The first `count` (< N; AVX-512's also N, and every arch's but SSE4.1's 0) lanes of an array,
+// `padding` in the others, and their store. No load or store leaves the arrays. AVX-512 moves them
+// with a lane mask; AVX2 loads with one (masked lanes never touch memory) but stores in halves, 4,
+// 2 and 1 floats by the bits of count, as SSE4.1 both loads and stores: AMD's AVX2 lane-masked
+// store took about 4 ns here, and SSE4.1's way through a local buffer (its scalar writes read back
+// as one vector, which no store forwards) cost a one-element call 25 to 30 ns, against 7 to 16 ns
+// now. Other archs (NEON) go through the buffer. Overloads on the arch's tag, the most derived
+// chosen, so that only their code has a buffer (an aligned buffer anywhere in a function costs
+// every call a stack realignment).
 template <class Arch>
 inline xsimd::batch<float, Arch> load_partial(xsimd::generic, const float* in, std::size_t count,
                                               float padding) {
