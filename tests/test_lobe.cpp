@@ -434,6 +434,33 @@ TEST(EpicenterCheck, MeasuresWhatAnIndependentSweepMeasures) {
   }
 }
 
+// Interpolation at N Chebyshev nodes recovers a sum of T_j(u) of degree below N exactly: the
+// setup's coefficients (summed over pairs of symmetric nodes, an odd count's middle node
+// alone), for even and odd N, on an interval off [-1, 1].
+TEST(PolynomialFit, ChebyshevCoefficientsRecoverAChebyshevSum) {
+  using detail::Real;
+  const std::vector<Real> sum_of = {0.25L, -1.5L, 0.75L, 2.0L, -0.125L, 0.5L, 1.0L};
+  const Real lo = -0.5, hi = 2;
+  const auto g = [&](Real x) {
+    const Real u = (2 * x - lo - hi) / (hi - lo);
+    Real previous = 1, current = u, value = sum_of[0] + sum_of[1] * u;
+    for (std::size_t j = 2; j < sum_of.size(); ++j) {
+      const Real next = 2 * u * current - previous;
+      value += sum_of[j] * next;
+      previous = current;
+      current = next;
+    }
+    return value;
+  };
+  for (int nodes : {7, 8, 9, 16, 33, 64}) {
+    const std::vector<Real> coefficients = detail::chebyshev_coefficients(g, lo, hi, nodes);
+    ASSERT_EQ(coefficients.size(), std::size_t(nodes));
+    for (int j = 0; j < nodes; ++j)
+      EXPECT_NEAR(double(coefficients[j]), j < int(sum_of.size()) ? double(sum_of[j]) : 0.0, 1e-15)
+          << "nodes " << nodes << ", coefficient " << j;
+  }
+}
+
 // PerLaneLobe checks its fits against Chebyshev series (src/polynomial_fit.hpp) in place of
 // the functions, trusting the error each series measures at its checking points, allowed for
 // twice: the series must stay within that on a grid 8 times as dense, it must not claim to
