@@ -31,10 +31,32 @@ inline std::vector<LobeCase> accuracy_grid() {
   return grid;
 }
 
+// The largest errors one test measured, by bound of kutlog/accuracy.hpp (kLobeBounds' order:
+// precise, fast, per_lane; and the per-lane peak's). A test that sweeps enough to find the
+// worst case asserts that each bound is at most four times what it measured: a bound far
+// above every measurement has drifted from the code.
+struct LargestErrors {
+  std::array<double, 3> abs_error{}, epicenter_ulp{};
+  double per_lane_peak_error = 0;
+  void expect_bounds_reached() const {
+    for (std::size_t i = 0; i < abs_error.size(); ++i) {
+      if (abs_error[i] == 0) continue;  // not measured by this test
+      const LobeBound& bound = kLobeBounds[i];
+      EXPECT_GE(abs_error[i], bound.max_abs_error() / 4) << bound.variant << ": a loose bound";
+      if (bound.max_epicenter_ulp() > 0)
+        EXPECT_GE(epicenter_ulp[i], bound.max_epicenter_ulp() / 4)
+            << bound.variant << ": a loose bound";
+    }
+    if (per_lane_peak_error > 0)
+      EXPECT_GE(per_lane_peak_error, kPerLanePeakError / 4) << "per-lane peak: a loose bound";
+  }
+};
+
 // Asserts kutlog/accuracy.hpp's bounds of the value returned and the hard contracts
 // 0 <= out <= peak (1, or the float coef: the output at t = 1) and out = 0 exactly where F = 0
-// (at and below the cut-off) for the four kernels of a lobe.
-inline void expect_within_bounds(const Lobe& lobe, const std::array<tools::LobeErrors, 4>& errors) {
+// (at and below the cut-off) for the four kernels of a lobe; adds its errors to `largest`.
+inline void expect_within_bounds(const Lobe& lobe, const std::array<tools::LobeErrors, 4>& errors,
+                                 LargestErrors* largest = nullptr) {
   const char* names[] = {"precise", "precise*coef", "fast", "fast*coef"};
   for (int i = 0; i < 4; ++i) {
     const LobeBound& bound = kLobeBounds[i < 2 ? 0 : 1];
@@ -45,6 +67,12 @@ inline void expect_within_bounds(const Lobe& lobe, const std::array<tools::LobeE
     const float peak = normalized ? float(lobe.coef_exact()) : 1.0f;
     EXPECT_LE(errors[i].max_abs_error, bound.max_abs_error())
         << "worst t = " << errors[i].worst_abs_input;
+    if (largest) {
+      const std::size_t which = i < 2 ? 0 : 1;
+      largest->abs_error[which] = std::max(largest->abs_error[which], errors[i].max_abs_error);
+      largest->epicenter_ulp[which] =
+          std::max(largest->epicenter_ulp[which], errors[i].max_epicenter_ulp);
+    }
     record_max(std::string(bound.variant) + "_abs_error", errors[i].max_abs_error);
     if (bound.max_epicenter_ulp() > 0) {
       EXPECT_LE(errors[i].max_epicenter_ulp, bound.max_epicenter_ulp())
@@ -60,10 +88,12 @@ inline void expect_within_bounds(const Lobe& lobe, const std::array<tools::LobeE
 // Asserts the bounds for every lobe of the grid, every `stride`-th float.
 inline void expect_grid_within_bounds(std::uint32_t stride,
                                       tools::LobeEvaluator evaluate = tools::evaluate_array) {
+  LargestErrors largest;
   for (const LobeCase& c : accuracy_grid()) {
     const Lobe lobe(c.n, c.k, c.Q);
-    expect_within_bounds(lobe, tools::measure_lobe(lobe, {stride, stride}, evaluate));
+    expect_within_bounds(lobe, tools::measure_lobe(lobe, {stride, stride}, evaluate), &largest);
   }
+  largest.expect_bounds_reached();
 }
 
 // Lobes off the grid, from a fixed seed: n log-uniform in [0.5, 10^6], one in four within 2 %
@@ -105,10 +135,13 @@ inline void expect_grid_within_bounds_everywhere(
   const std::uint64_t samples = sweep_samples();
   if (samples == 0) return expect_grid_within_bounds(1, evaluate);
   const double per_lobe = double(samples) / double(accuracy_grid().size());
+  LargestErrors largest;
   for (const LobeCase& c : accuracy_grid()) {
     const Lobe lobe(c.n, c.k, c.Q);
-    expect_within_bounds(lobe, tools::measure_lobe(lobe, dense_sweep(lobe, per_lobe, per_lobe), evaluate));
+    expect_within_bounds(lobe, tools::measure_lobe(lobe, dense_sweep(lobe, per_lobe, per_lobe), evaluate),
+                         &largest);
   }
+  largest.expect_bounds_reached();
 }
 
 // Random lobes (random_lobes(count, seed)), each swept through `evaluate` with about
@@ -116,11 +149,13 @@ inline void expect_grid_within_bounds_everywhere(
 inline void expect_random_lobes_within_bounds(int count, unsigned seed, double support_samples,
                                               double epicenter_samples,
                                               tools::LobeEvaluator evaluate = tools::evaluate_array) {
+  LargestErrors largest;
   for (const LobeCase& c : random_lobes(count, seed)) {
     const Lobe lobe(c.n, c.k, c.Q);
     expect_within_bounds(lobe, tools::measure_lobe(lobe, dense_sweep(lobe, support_samples, epicenter_samples),
-                                                   evaluate));
+                                                   evaluate), &largest);
   }
+  largest.expect_bounds_reached();
 }
 
 // The dense random-lobe sweep of the exhaustive tests: 96 lobes, 2^21 floats of each support
@@ -179,9 +214,12 @@ inline std::vector<PerLaneCase> per_lane_materials(int random_count, unsigned se
 // Random lanes of (t, n): n log-uniform in [n_min, n_max], t over each lane's lobe and a little
 // past its cut-off, a third in the epicenter, a third just inside the cut-off. Asserts the
 // bound relative to each lane's peak, the measured epicenter bound in ulps of the value
-// returned, and 0 <= out <= the lane's output at t = 1 (and <= 1 unnormalized).
+// returned, 0 <= out <= the lane's output at t = 1, and that output against the reference:
+// 1 unnormalized, within kPerLanePeakError of coef_exact(n) normalized. Adds its errors to
+// `largest`.
 inline void expect_per_lane_within_bounds(const PerLaneCase& c, unsigned seed, std::size_t lanes,
-                                          PerLaneEvaluator evaluate = evaluate_per_lane_array) {
+                                          PerLaneEvaluator evaluate = evaluate_per_lane_array,
+                                          LargestErrors* largest = nullptr) {
   const LobeBound bound = kLobeBounds[2];
   const PerLaneLobe lobe(c.n_min, c.n_max, c.k, c.Q);
   std::mt19937 engine(seed);
@@ -206,17 +244,28 @@ inline void expect_per_lane_within_bounds(const PerLaneCase& c, unsigned seed, s
     evaluate(lobe, normalization, ones.data(), n.data(), peak.data(), lanes);
     tools::LobeErrors errors;
     std::size_t outside = 0, first_outside = 0;
+    double peak_error = 0;
+    float worst_peak_n = 0;
     for (std::size_t i = 0; i < lanes; ++i) {
       const double scale = normalization == Normalization::none ? 1.0 : references[i].coef_exact();
       errors.add(t[i], out[i], scale, references[i].eval(t[i]));
       errors.add(1.0f, peak[i], scale, 1.0);  // the peak itself within the bound
-      if (normalization == Normalization::none) peak[i] = std::min(peak[i], 1.0f);
+      const double lane_peak_error = std::fabs(double(peak[i]) - scale) / scale;
+      if (!(lane_peak_error <= peak_error)) peak_error = lane_peak_error, worst_peak_n = n[i];
       if (!(out[i] >= 0 && out[i] <= peak[i]) && outside++ == 0) first_outside = i;
     }
+    if (normalization == Normalization::none) EXPECT_EQ(peak_error, 0.0) << "n = " << worst_peak_n;
+    EXPECT_LE(peak_error, kPerLanePeakError) << "n = " << worst_peak_n;
+    record_max("per_lane_peak_error", peak_error);
     EXPECT_LE(errors.max_abs_error, bound.max_abs_error()) << "t = " << errors.worst_abs_input;
     EXPECT_LE(errors.max_epicenter_ulp, bound.max_epicenter_ulp()) << "t = " << errors.worst_ulp_input;
     record_max("per_lane_abs_error", errors.max_abs_error);
     record_max("per_lane_epicenter_ulp", errors.max_epicenter_ulp);
+    if (largest) {
+      largest->abs_error[2] = std::max(largest->abs_error[2], errors.max_abs_error);
+      largest->epicenter_ulp[2] = std::max(largest->epicenter_ulp[2], errors.max_epicenter_ulp);
+      largest->per_lane_peak_error = std::max(largest->per_lane_peak_error, peak_error);
+    }
     EXPECT_EQ(errors.max_where_zero, 0.0f) << "at t = " << errors.max_where_zero_input;
     EXPECT_EQ(outside, 0u) << "e.g. t = " << t[first_outside] << ", n = " << n[first_outside]
                            << ": " << out[first_outside] << " against the peak "

@@ -152,7 +152,10 @@ TEST_P(LobePerArch, ShortSpansEqualTheLongArrayForEveryKernel) {
 
 TEST_P(LobePerArch, PerLaneMaterialsWithinBoundsAndBetweenZeroAndPeak) {
   unsigned seed = 17;
-  for (const PerLaneCase& c : per_lane_materials(40, 2026)) expect_per_lane_within_bounds(c, seed++, 8192);
+  LargestErrors largest;
+  for (const PerLaneCase& c : per_lane_materials(40, 2026))
+    expect_per_lane_within_bounds(c, seed++, 8192, evaluate_per_lane_array, &largest);
+  largest.expect_bounds_reached();
 }
 
 TEST_P(LobePerArch, PerLaneDataRuleAndClamping) {
@@ -168,7 +171,7 @@ TEST_P(LobePerArch, PerLaneDataRuleAndClamping) {
   EXPECT_TRUE(std::isnan(out[4]));
   EXPECT_TRUE(std::isnan(out[7]));  // also off the support
   EXPECT_EQ(out[5], out[6]);  // both clamped to n_max
-  EXPECT_NEAR(out[6], ref::KutlogLobe(1000, 3, 0.5).eval(0.999f), 1e-6);
+  EXPECT_NEAR(out[6], ref::KutlogLobe(1000, 3, 0.5).eval(0.999f), kLobeBounds[2].max_abs_error());
 }
 
 // n_min = n_max: every lane has the same n (tests/fuzz found NaN: the fit's nodes coincided).
@@ -218,7 +221,7 @@ TEST_P(LobePerArch, HugeExponentsKeepTheDataRule) {
     for (int i = 3; i < 6; ++i) EXPECT_EQ(out[i], 0.0f) << "n = " << n[i] << ", t = " << t[i];
     lobe.eval(t.data(), n.data(), out.data(), 2, Normalization::exact_coef);
     for (int i = 0; i < 2; ++i)
-      EXPECT_NEAR(out[i] / ref::coef_exact(n[i], c.k, c.Q), 1, 1e-5) << "n = " << n[i];
+      EXPECT_NEAR(out[i] / ref::coef_exact(n[i], c.k, c.Q), 1, kPerLanePeakError) << "n = " << n[i];
   }
 }
 
@@ -272,7 +275,10 @@ TEST_P(LobeExhaustive, PerLaneRandomMaterials) {
   const std::uint64_t samples = sweep_samples();
   const int lanes = samples ? int(std::min<std::uint64_t>(1 << 14, samples / kMaterials)) : 1 << 14;
   unsigned seed = 1;
-  for (const PerLaneCase& c : per_lane_materials(kMaterials, 2027)) expect_per_lane_within_bounds(c, seed++, lanes);
+  LargestErrors largest;
+  for (const PerLaneCase& c : per_lane_materials(kMaterials, 2027))
+    expect_per_lane_within_bounds(c, seed++, lanes, evaluate_per_lane_array, &largest);
+  largest.expect_bounds_reached();
 }
 TEST_P(LobeExhaustive, RandomLobesDensely) { expect_random_lobes_densely_within_bounds(); }
 INSTANTIATE_TEST_SUITE_P(Arch, LobeExhaustive, testing::ValuesIn(supported_archs()),

@@ -13,6 +13,7 @@
 #include "kutlog/dispatch.hpp"
 #include "kutlog/reference.hpp"
 #include "cosine_error.hpp"
+#include "kutlog/lobe.hpp"
 #include "kutlog/shade.hpp"
 #include "test_archs.hpp"
 
@@ -116,6 +117,64 @@ TEST_P(ShadePerArch, BlinnAndPhongMatchTheReference) {
       // more of the 4099 at n = 1000, Phong, where the lobe is narrowest).
       EXPECT_GT(lit, 20) << "n " << n;
       EXPECT_GT(dark, 100) << "n " << n;
+    }
+  }
+}
+
+// The kernels' float cosines, computed here as kutlog/simd/shade.hpp computes them: each
+// multiply-add fused (one rounding) on an arch with FMA, else a product and a sum (this file
+// is compiled with -ffp-contract=off, so that the compiler fuses none of them).
+struct FloatCosines {
+  bool fused;
+  float mul_add(float a, float b, float c) const { return fused ? std::fma(a, b, c) : a * b + c; }
+  float dot(ref::Vec3 a, ref::Vec3 b) const {
+    return mul_add(float(a.x), float(b.x), mul_add(float(a.y), float(b.y), float(a.z) * float(b.z)));
+  }
+  float blinn(ref::Vec3 n, ref::Vec3 l, ref::Vec3 v) const {
+    const ref::Vec3 sum{float(l.x) + float(v.x), float(l.y) + float(v.y), float(l.z) + float(v.z)};
+    const float length_squared = dot(sum, sum);
+    return length_squared == 0 ? 0.0f : dot(n, sum) / std::sqrt(length_squared);
+  }
+  float phong(ref::Vec3 n, ref::Vec3 l, ref::Vec3 v) const {
+    const float n_dot_l = dot(n, l), twice = n_dot_l + n_dot_l;
+    return fused ? std::fma(twice, dot(n, v), -dot(l, v)) : twice * dot(n, v) - dot(l, v);
+  }
+};
+
+// The vector forms give, bit for bit, the lobe's eval of their own float cosine times
+// max(N.L, 0): what BlinnAndPhongMatchTheReference bounds only within the cosines' error,
+// about 10^3 times the lobe's bound at the shoulder of a narrow lobe.
+TEST_P(ShadePerArch, VectorsGiveEvalOfTheirFloatCosinesExactly) {
+  const Scene scene = random_scene(4099, 4);
+  constexpr std::size_t kCount = 4099;
+  std::vector<float> out(kCount), t(kCount), n_dot_l(kCount), evaluated(kCount);
+  for (const auto& [n, k, Q] : {std::tuple{1000.0, 3, 0.5}, std::tuple{100.0, 5, 0.3}}) {
+    const Lobe lobe(n, k, Q);
+    lobe.eval(t.data(), evaluated.data(), 1);  // the active arch's loops, from here on
+    const FloatCosines cosines{detail::active_lobe_loops.load()->fused_fma};
+    for (Reflection reflection : {Reflection::blinn, Reflection::phong}) {
+      ShadeOptions options;
+      options.reflection = reflection;
+      options.normalization = Normalization::exact_coef;
+      shade(lobe, scene.normal(), scene.light(), scene.viewer(), out.data(), kCount, nullptr,
+            options);
+      int lit = 0;
+      for (std::size_t i = 0; i < kCount; ++i) {
+        const ref::Vec3 N = scene.at(scene.nx, scene.ny, scene.nz, i),
+                        L = scene.at(scene.lx, scene.ly, scene.lz, i),
+                        V = scene.at(scene.vx, scene.vy, scene.vz, i);
+        t[i] = reflection == Reflection::blinn ? cosines.blinn(N, L, V) : cosines.phong(N, L, V);
+        n_dot_l[i] = cosines.dot(N, L);
+      }
+      lobe.eval(t.data(), evaluated.data(), kCount, Variant::precise, Normalization::exact_coef);
+      for (std::size_t i = 0; i < kCount; ++i) {
+        const float expected = evaluated[i] * std::max(0.0f, n_dot_l[i]);
+        lit += expected > 0;
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(out[i]), std::bit_cast<std::uint32_t>(expected))
+            << "n " << n << ", lane " << i << ", t " << t[i] << ": " << out[i] << " against "
+            << expected;
+      }
+      EXPECT_GT(lit, 20) << "n " << n;
     }
   }
 }

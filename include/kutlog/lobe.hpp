@@ -332,7 +332,8 @@ struct PerLaneKernel {
 //   otherwise, naming the parameter and its range); lanes' n outside [n_min, n_max] are
 //   clamped to it; NaN n or t gives NaN. A range too wide for one fit in 1/n (tiny Q with n
 //   over many decades, e.g. Q = 1e-300 and n in [1, 10^38]) is refused the same way: split it.
-//   Contract: 0 <= out <= the lane's output at t = 1; |out - scale F| <= 2^-20 scale (scale:
+//   Contract: 0 <= out <= the lane's peak, its output at t = 1: exactly 1 unnormalized, within
+//   1.5 2^-22 of coef_exact(n) normalized (kPerLanePeakError); |out - scale F| <= 2^-20 scale (scale:
 //   1, or the lane's coef when normalized), measured on random (t, n) lanes of random
 //   materials over every k in 1..64, Q from 10^-6 to 1 - 5 10^-7 and n up to FLT_MAX
 //   (tests/test_lobe.cpp); the epicenter's ULP error is reported by kutlog/accuracy.hpp.
