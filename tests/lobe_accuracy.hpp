@@ -127,7 +127,7 @@ inline tools::LobeSweep dense_sweep(const Lobe& lobe, double support_samples, do
           std::max(61 * support_stride, stride(-1, cut, support_samples))};
 }
 
-// Every float of [-1, 1] for every lobe of the grid; under emulation (KUTLOG_SWEEP_SAMPLES,
+// Every float of the support of every lobe of the grid (sampled below the cut: LobeSweep); under emulation (KUTLOG_SWEEP_SAMPLES,
 // tests/sweep_samples.hpp) that many floats of each lobe's support and as many of its
 // epicenter, where the bounds are tightest, shared among the grid's lobes.
 inline void expect_grid_within_bounds_everywhere(

@@ -7,7 +7,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <optional>
+#include <set>
 #include <random>
 #include <string>
 #include <utility>
@@ -111,42 +113,72 @@ TEST_P(LobePerArch, AnyCountAndOffsetWritesOnlyTheOutput) {
 
 
 // A span of at most one batch runs its own straight-line code, not the loop the exhaustive
-// sweeps go through: each of its kernels (every degree, finish and clamp the lobes below
-// reach, both variants and normalizations) must give, bit for bit, what a long array gives.
+// sweeps go through: each array loop (degree, finish and clamp: LobeArrayKernels' slots) must
+// give, bit for bit, what it gives on a long array. One kernel per loop that the setup gives
+// this arch's arithmetic on the grid and 400 random lobes, which reach every finish but the
+// clamped split one (the setup proves that clamp needless wherever it splits the scale): that
+// loop runs a split kernel with its clamp put back.
 TEST_P(LobePerArch, ShortSpansEqualTheLongArrayForEveryKernel) {
-  std::vector<LobeCase> lobes = {{100, 3, 0.5}, {1000, 5, 0.5}, {10, 1, 0.9}, {4000, 2, 0.3}};
-  for (const LobeCase& c : random_lobes(24, 2031)) lobes.push_back(c);
-  constexpr std::size_t kLongest = 40;  // past two batches of every arch
-  std::vector<float> t(kLongest);
-  for (const LobeCase& c : lobes) {
+  using Loops = detail::LobeArrayKernels;
+  float probe = 1;
+  Lobe(10, 1, 0.5).eval(&probe, &probe, 1);  // the active arch's loops, from here on
+  const Loops& loops = *detail::active_lobe_loops.load();
+  std::vector<LobeCase> candidates = accuracy_grid();
+  for (const LobeCase& c : random_lobes(400, 2031)) candidates.push_back(c);
+  std::map<int, LobeKernel> kernel_of_slot;
+  for (const LobeCase& c : candidates) {
     const Lobe lobe(c.n, c.k, c.Q);
+    for (Variant variant : tools::kLobeVariants)
+      for (Normalization normalization : tools::kLobeNormalizations) {
+        if (normalization == Normalization::exact_coef &&
+            !(lobe.coef_exact() <= std::numeric_limits<float>::max()))
+          continue;
+        const LobeKernel& kernel = lobe.kernel(variant, normalization, loops.fused_fma);
+        kernel_of_slot.emplace(Loops::slot_of(kernel), kernel);
+        if (!kernel.clamped && kernel.scale_lo != 0) {  // split: its clamp put back
+          LobeKernel clamped = kernel;
+          clamped.clamped = true;
+          kernel_of_slot.emplace(Loops::slot_of(clamped), clamped);
+        }
+      }
+  }
+  std::set<int> finishes;
+  for (const auto& [slot, kernel] : kernel_of_slot)
+    if (slot != Loops::kSlots - 1) finishes.insert(slot % Loops::kSlotsPerDegree);
+  // plain and split, clamped (0, 1) and not (3, 4); compensated (2) with FMA only
+  const std::set<int> every_finish =
+      loops.fused_fma ? std::set<int>{0, 1, 2, 3, 4} : std::set<int>{0, 1, 3, 4};
+  EXPECT_EQ(finishes, every_finish);
+  EXPECT_TRUE(kernel_of_slot.count(Loops::kSlots - 1)) << "no kernel for the generic loop";
+  std::printf("%zu array loops run\n", kernel_of_slot.size());
+
+  constexpr std::size_t kLongest = 40;  // past two batches of every arch
+  std::vector<float> t(kLongest), whole(4 * kLongest), span(kLongest);
+  for (const auto& [slot, kernel] : kernel_of_slot) {
+    const detail::LobeArrayKernel loop = loops.by_slot[slot];
     // Over the support and off it, t = 1 and above, and NaN.
-    const double cut = lobe.cutoff_angle() >= ref::pi / 2 ? -0.1 : std::cos(lobe.cutoff_angle());
+    const double cut = kernel.t_cut <= 0 ? -0.1 : double(kernel.t_cut);
     for (std::size_t i = 0; i < kLongest; ++i)
       t[i] = float(cut + (1.02 - cut) * double(i) / double(kLongest - 3));
     t[kLongest / 2] = kNaN;
-    for (Variant variant : {Variant::precise, Variant::fast})
-      for (Normalization normalization : {Normalization::none, Normalization::exact_coef}) {
-        // t four times over in one long array: its first kLongest outputs from whole batches.
-        std::vector<float> whole(4 * kLongest), span(kLongest);
-        for (std::size_t i = 0; i < whole.size(); ++i) whole[i] = t[i % kLongest];
-        lobe.eval(whole.data(), whole.data(), whole.size(), variant, normalization);
-        for (std::size_t count = 1; count <= kLongest; ++count) {
-          lobe.eval(t.data(), span.data(), count, variant, normalization);
-          for (std::size_t i = 0; i < count; ++i) {
-            const auto context = [&] {
-              return ::testing::PrintToString(c) + ", count " + std::to_string(count) + ", t " +
-                     std::to_string(t[i]);
-            };
-            if (std::isnan(whole[i])) {  // the data rule promises NaN, not its sign bit
-              ASSERT_TRUE(std::isnan(span[i])) << context();
-              continue;
-            }
-            ASSERT_EQ(std::bit_cast<std::uint32_t>(span[i]), std::bit_cast<std::uint32_t>(whole[i]))
-                << context();
-          }
+    // t four times over in one long array: its first kLongest outputs from whole batches.
+    for (std::size_t i = 0; i < whole.size(); ++i) whole[i] = t[i % kLongest];
+    loop(kernel, whole.data(), whole.data(), whole.size());
+    for (std::size_t count = 1; count <= kLongest; ++count) {
+      loop(kernel, t.data(), span.data(), count);
+      for (std::size_t i = 0; i < count; ++i) {
+        const auto context = [&] {
+          return "slot " + std::to_string(slot) + ", count " + std::to_string(count) + ", t " +
+                 std::to_string(t[i]);
+        };
+        if (std::isnan(whole[i])) {  // the data rule promises NaN, not its sign bit
+          ASSERT_TRUE(std::isnan(span[i])) << context();
+          continue;
         }
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(span[i]), std::bit_cast<std::uint32_t>(whole[i]))
+            << context();
       }
+    }
   }
 }
 
@@ -263,7 +295,7 @@ TEST(Lobe, CoefBeyondFloatAndTooWideRangesAreRefused) {
 
 INSTANTIATE_TEST_SUITE_P(Arch, LobePerArch, testing::ValuesIn(supported_archs()), arch_test_name);
 
-// Every float of [-1, 1] (labelled `exhaustive`).
+// Every float of each support, sampled below the cut (labelled `exhaustive`).
 class LobeExhaustive : public testing::TestWithParam<Arch> {
  protected:
   ScopedArch forced{GetParam()};
@@ -344,6 +376,7 @@ TEST(LobeClamp, LowestComputedQIsBoundedAndBenchmarkLobesRunUnclamped) {
   for (const LobeCase& c : {LobeCase{1000, 1, 0.5}, LobeCase{1000, 3, 0.5}, LobeCase{1000, 5, 0.5},
                             LobeCase{2, 1, 0.1}, LobeCase{10, 5, 0.9}, LobeCase{1e4, 4, 0.3}}) {
     const Lobe lobe(c.n, c.k, c.Q);
+    int checked = 0;  // float polynomial kernels, not compensated: what the test is about
     for (Variant variant : tools::kLobeVariants)
       for (Normalization normalization : tools::kLobeNormalizations)
         for (Arithmetic arithmetic : {Arithmetic::unfused, Arithmetic::fused}) {
@@ -353,6 +386,7 @@ TEST(LobeClamp, LowestComputedQIsBoundedAndBenchmarkLobesRunUnclamped) {
                                    std::to_string(int(normalization)) + " arithmetic " +
                                    std::to_string(int(arithmetic));
           if (kernel.form != LobeKernel::Form::polynomial || kernel.compensated) continue;
+          ++checked;
           // (lowest_q depends on the kernel's coefficients, not on how exact the reference is)
           const LobeSetup setup = lobe_setup(lobe, kernel.center_t);
           const double scale = normalization == Normalization::none ? 1.0 : lobe.coef_exact();
@@ -384,6 +418,7 @@ TEST(LobeClamp, LowestComputedQIsBoundedAndBenchmarkLobesRunUnclamped) {
           EXPECT_GT(lowest, 0.0) << name;
           if (c.n == 1000) EXPECT_FALSE(kernel.clamped) << name;
         }
+    EXPECT_GE(checked, 4) << testing::PrintToString(c) << ": too few kernels checked";
   }
 }
 

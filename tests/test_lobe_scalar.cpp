@@ -68,7 +68,8 @@ TEST(LobeScalar, DataRuleAsTheArrays) {
   EXPECT_EQ(per_lane.eval(0.999f, 1e6f), per_lane.eval(0.999f, 1000.0f));  // clamped to n_max
 }
 
-// Every float of [-1, 1] on the grid, and random lobes densely (labelled `exhaustive`).
+// Every float of each support on the grid (sampled below the cut), and random lobes densely
+// (labelled `exhaustive`).
 TEST(LobeScalarExhaustive, AccuracyGridEveryFloat) {
   expect_grid_within_bounds_everywhere(evaluate_scalar_here);
 }

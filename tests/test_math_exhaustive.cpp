@@ -7,6 +7,7 @@
 // random pairs shrink to as many.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
 #include <string>
 #include <tuple>
@@ -46,39 +47,52 @@ std::vector<Range> hardest_ranges(const std::string& name) {
   return {};
 }
 
+// The largest error of each sweep of one kernel on one arch, asserted within the bound.
+class LargestUlp {
+ public:
+  LargestUlp(const std::string& name, double bound) : name_(name), bound_(bound) {}
+  void add(const tools::ErrorStats& stats, const std::string& where) {
+    EXPECT_LE(stats.max_ulp, bound_) << where << "worst input x " << stats.worst_x << ", y "
+                                     << stats.worst_y;
+    record_max(name_ + "_max_ulp", stats.max_ulp);
+    largest_ = std::max(largest_, stats.max_ulp);
+  }
+  // The measured column is the largest error over the platform's archs, rounded up: every
+  // arch measures within 0.05 ULP of it over every float (x86-64: 0.03 apart at most). A
+  // sample (under emulation) may miss the worst input: there a quarter of the bound.
+  void expect_bound_reached(bool every_float) const {
+    EXPECT_GE(largest_, every_float ? bound_ - 0.05 : bound_ / 4) << name_ << ": a loose bound";
+  }
+
+ private:
+  std::string name_;
+  double bound_, largest_ = 0;
+};
+
 class Exhaustive : public testing::TestWithParam<Case> {};
 
 TEST_P(Exhaustive, EveryFloatOfTheDomainWithinTheBound) {
   const auto& [name, arch] = GetParam();
   const ScopedArch forced(arch);
-  const double bound = find_accuracy_bound(name)->max_ulp();
+  LargestUlp largest(name, find_accuracy_bound(name)->max_ulp());
   tools::SweepOptions sampled;
   sampled.samples = sweep_samples();
   if (name != "pow") {
     const tools::UnaryFunction& function = *tools::find_unary_function(name);
-    const tools::ErrorStats stats =
-        tools::sweep_unary(function, function.domain_lo, function.domain_hi, sampled);
-    EXPECT_LE(stats.max_ulp, bound) << "worst input " << stats.worst_x;
-    record_max(name + "_max_ulp", stats.max_ulp);
-    if (sampled.samples == 0) return;
-    for (const auto& [lo, hi] : hardest_ranges(name)) {
-      const tools::ErrorStats hard = tools::sweep_unary(function, lo, hi);
-      EXPECT_LE(hard.max_ulp, bound) << "[" << lo << ", " << hi << "]: worst input " << hard.worst_x;
-      record_max(name + "_max_ulp", hard.max_ulp);
-    }
-    return;
+    largest.add(tools::sweep_unary(function, function.domain_lo, function.domain_hi, sampled), "");
+    if (sampled.samples > 0)
+      for (const auto& [lo, hi] : hardest_ranges(name))
+        largest.add(tools::sweep_unary(function, lo, hi),
+                    "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]: ");
+  } else {
+    tools::SweepOptions per_exponent;  // the samples shared among the exponents
+    per_exponent.samples = sampled.samples / std::size(tools::kPowSweepExponents);
+    for (float y : tools::kPowSweepExponents)
+      largest.add(tools::sweep_pow_exponent(y, per_exponent), "y = " + std::to_string(y) + ": ");
+    largest.add(tools::sweep_pow_random(sampled.samples ? sampled.samples : 10'000'000, 1),
+                "random pairs: ");
   }
-  tools::SweepOptions per_exponent;  // the samples shared among the exponents
-  per_exponent.samples = sampled.samples / std::size(tools::kPowSweepExponents);
-  for (float y : tools::kPowSweepExponents) {
-    const tools::ErrorStats stats = tools::sweep_pow_exponent(y, per_exponent);
-    EXPECT_LE(stats.max_ulp, bound) << "y = " << y << ", worst x " << stats.worst_x;
-    record_max("pow_max_ulp", stats.max_ulp);
-  }
-  const tools::ErrorStats random =
-      tools::sweep_pow_random(sampled.samples ? sampled.samples : 10'000'000, 1);
-  EXPECT_LE(random.max_ulp, bound) << "worst x " << random.worst_x << ", y " << random.worst_y;
-  record_max("pow_max_ulp", random.max_ulp);
+  largest.expect_bound_reached(sampled.samples == 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -44,7 +44,7 @@ struct Measurement {
 };
 inline constexpr Measurement kMeasurements[] = {
     {Platform::x86_64, "avx512 avx2 sse4.1", "exhaustive",
-     "every float of each math kernel's domain, every float t of each lobe (below)",
+     "every float of each math kernel's domain, every float t of each lobe's support (below)",
      "kutlog-ulp --arch all --summary; ctest --test-dir build -L exhaustive"},
     {Platform::aarch64, "neon64", "sampled",
      "under qemu-aarch64 (KUTLOG_SWEEP_SAMPLES=2^24): 2^24 floats evenly spread over each "
@@ -86,8 +86,10 @@ inline constexpr AccuracyBound kAccuracyBounds[] = {
 //   epicenter ulp:  |out - scale F| in ulps of the float scale F, where F >= 0.6.
 // And always 0 <= out <= peak (1, or the float coef: the output at t = 1), NaN for NaN.
 // Measured (tests/test_lobe.cpp, ctest -L exhaustive) on every arch of the platform over every
-// float t in [-1, 1] on the grid n in {k+1, 10, 100, 1000, 10000}, k in 1..5, Q in {0.1, 0.5,
-// 0.9}, and on random lobes (n log-uniform in [0.5, 10^6] and near k, k in 1..64, Q in
+// float t of each lobe's support, and below its cut (where out must be an exact 0) every 61st
+// float plus every float within 2^16 of the cut and of 0 (tools/common/lobe_errors.hpp), on
+// the grid n in {k+1, 10, 100, 1000, 10000}, k in 1..5, Q in {0.1, 0.5, 0.9}, and on random
+// lobes (n log-uniform in [0.5, 10^6] and near k, k in 1..64, Q in
 // [0.01, 0.99]), every float of each epicenter up to 2^24 of them, 2^21 of each support; on
 // aarch64 sampled (kMeasurements).
 struct LobeBound {
