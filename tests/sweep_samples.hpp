@@ -1,6 +1,7 @@
 // KUTLOG_SWEEP_SAMPLES: set by tests/CMakeLists.txt when the tests run under an emulator
-// (qemu), where a sweep of every float takes hours. The exhaustive tests then sample about that
-// many floats of each domain, and sweep their hardest ranges whole.
+// (qemu), where a sweep of every float takes hours, and by scripts/test.sh for the portable
+// build. The exhaustive tests then sample about that many floats of each domain, and sweep
+// their hardest ranges whole.
 #pragma once
 
 #include <cstdint>

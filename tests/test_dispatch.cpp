@@ -54,6 +54,16 @@ TEST(Dispatch, NamesRoundTripAndUnknownNamesAreRejected) {
   EXPECT_THROW(force_arch("neon"), std::invalid_argument);
 }
 
+// The per-arch tests run on the archs this CPU supports (supported_archs()): a compiled arch it
+// lacks would drop out of them without a word. This test names it and is reported skipped.
+TEST(PerArchTests, RunOnEveryCompiledArch) {
+  std::string lacking;
+  for (Arch arch : kCompiledArchs)
+    if (!arch_supported(arch)) lacking += " " + std::string(arch_name(arch));
+  if (!lacking.empty())
+    GTEST_SKIP() << "this CPU lacks" << lacking << ": the per-arch tests of those archs do not run";
+}
+
 TEST(Dispatch, ForcingEachSupportedArchWorks) {
   const std::vector<float> x = sample_inputs();
   std::vector<float> out(x.size());
