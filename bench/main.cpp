@@ -1,7 +1,7 @@
 // kutlog-bench: Google Benchmark over every arch this CPU supports, plus scalar std:: peers.
 //
-//   kutlog-bench [benchmark flags] [--kutlog_ratios]
-//   kutlog-bench --kutlog_ratios_from=FILE.json
+//   kutlog-bench [benchmark flags] [--kutlog_ratios] [--kutlog_page=DIR]
+//   kutlog-bench --kutlog_ratios_from=FILE.json [--kutlog_page=DIR]
 //   kutlog-bench --kutlog_setup
 //
 // --kutlog_setup prints the median and worst construction time of a Lobe, a PerLaneLobe and a
@@ -10,12 +10,19 @@
 // peers, taken from this one run (medians when --benchmark_repetitions is given);
 // --kutlog_ratios_from prints them from a run saved with --benchmark_out=FILE.json, and runs
 // nothing.
+// --kutlog_page=DIR writes the ratio tables with their provenance to DIR/<machine>.md
+// (bench/benchmark_page.hpp) instead of printing them: from the saved run of
+// --kutlog_ratios_from, or after a run, from the JSON its --benchmark_out=FILE wrote. Every run
+// records in its context what the page shows beside Google Benchmark's own fields: CPU model,
+// archs, compiler, flags, commit and the command line.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <cstdio>
 #include <chrono>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <memory>
 #include <numbers>
 #include <optional>
@@ -25,6 +32,8 @@
 #include <string>
 #include <vector>
 
+#include "benchmark_page.hpp"
+#include "build_info.hpp"
 #include "inputs.hpp"
 #include "lobe_benchmarks.hpp"
 #include "sampling_benchmarks.hpp"
@@ -157,14 +166,86 @@ void print_setup_times(std::FILE* out) {
                  (*times)[99] / 2 + (*times)[100] / 2, times->back());
   }
 }
+
+// The CPU's model name as the kernel reports it ("model name" in /proc/cpuinfo), or "unknown".
+std::string cpu_model() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  for (std::string line; std::getline(cpuinfo, line);)
+    if (line.rfind("model name", 0) == 0 && line.find(':') != std::string::npos) {
+      const std::size_t start = line.find_first_not_of(" \t", line.find(':') + 1);
+      if (start != std::string::npos) return line.substr(start);
+    }
+  return "unknown";
+}
+
+// The command line as a shell reads it back: arguments with characters the shell treats
+// specially are single-quoted.
+std::string command_line(int argc, char** argv) {
+  std::string line;
+  for (int i = 0; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    const bool plain = !arg.empty() && arg.find_first_not_of("abcdefghijklmnopqrstuvwxyz"
+                                                             "ABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                             "0123456789_-+=/.,:@%") == arg.npos;
+    if (i) line += ' ';
+    if (plain) {
+      line += arg;
+      continue;
+    }
+    line += '\'';
+    for (char c : arg) line += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    line += '\'';
+  }
+  return line;
+}
+
+// What a benchmark page shows of the run besides Google Benchmark's own context.
+void add_run_context(int argc, char** argv) {
+  std::string archs;
+  for (Arch arch : supported_archs()) archs += (archs.empty() ? "" : " ") + std::string(arch_name(arch));
+  benchmark::AddCustomContext("kutlog_cpu", cpu_model());
+  benchmark::AddCustomContext("kutlog_archs", archs);
+  benchmark::AddCustomContext("kutlog_compiler", kBuildCompiler);
+  benchmark::AddCustomContext("kutlog_build_type", kBuildType);
+  benchmark::AddCustomContext("kutlog_cxx_flags", kBuildCxxFlags);
+  benchmark::AddCustomContext("kutlog_arch_flags", kBuildArchFlags);
+  benchmark::AddCustomContext("kutlog_commit", kBuildCommit);
+  benchmark::AddCustomContext("kutlog_command", command_line(argc, argv));
+}
+
+// A saved run (--benchmark_out=FILE.json): its ratio tables printed, or with a page directory,
+// its page written to DIR/<machine>.md. 0, or 2 on an error.
+int report_saved_run(const std::string& json, const std::string& page_directory) {
+  try {
+    RatioCollector saved;
+    saved.load_json(json);
+    if (page_directory.empty()) {
+      saved.print_ratios(stdout);
+      return 0;
+    }
+    const std::filesystem::path path =
+        std::filesystem::path(page_directory) / (machine_slug(saved.context()) + ".md");
+    std::filesystem::create_directories(page_directory);
+    const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "w"), &std::fclose);
+    if (!file) throw std::runtime_error("cannot write " + path.string());
+    write_benchmark_page(file.get(), saved);
+    std::printf("kutlog-bench: wrote %s\n", path.c_str());
+    return 0;
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "kutlog-bench: error: %s\n", error.what());
+    return 2;
+  }
+}
 }  // namespace
 }  // namespace kutlog::bench
 
 int main(int argc, char** argv) {
   using namespace kutlog;
   bool print_ratios = false;
+  std::string ratios_from, page_directory, run_json;
   std::vector<char*> args;
-  constexpr std::string_view kFromFlag = "--kutlog_ratios_from=";
+  constexpr std::string_view kFromFlag = "--kutlog_ratios_from=", kPageFlag = "--kutlog_page=";
+  constexpr std::string_view kOutFlag = "--benchmark_out=";
   for (int i = 0; i < argc; ++i) {
     const std::string_view arg = argv[i];
     if (arg == "--kutlog_ratios") {
@@ -172,20 +253,21 @@ int main(int argc, char** argv) {
     } else if (arg == "--kutlog_setup") {
       bench::print_setup_times(stdout);
       return 0;
-    } else if (arg.substr(0, kFromFlag.size()) == kFromFlag) {
-      bench::RatioCollector saved;
-      try {
-        saved.load_json(std::string(arg.substr(kFromFlag.size())));
-      } catch (const std::exception& error) {
-        std::fprintf(stderr, "kutlog-bench: error: %s\n", error.what());
-        return 2;
-      }
-      saved.print_ratios(stdout);
-      return 0;
+    } else if (arg.starts_with(kFromFlag)) {
+      ratios_from = arg.substr(kFromFlag.size());
+    } else if (arg.starts_with(kPageFlag)) {
+      page_directory = arg.substr(kPageFlag.size());
     } else {
+      if (arg.starts_with(kOutFlag)) run_json = arg.substr(kOutFlag.size());
       args.push_back(argv[i]);
     }
   }
+  if (!ratios_from.empty()) return bench::report_saved_run(ratios_from, page_directory);
+  if (!page_directory.empty() && run_json.empty()) {
+    std::fprintf(stderr, "kutlog-bench: error: --kutlog_page after a run needs --benchmark_out=FILE.json\n");
+    return 2;
+  }
+  bench::add_run_context(argc, argv);
   int count = int(args.size());
   benchmark::Initialize(&count, args.data());
   if (benchmark::ReportUnrecognizedArguments(count, args.data())) return 2;
@@ -200,5 +282,6 @@ int main(int argc, char** argv) {
   benchmark::RunSpecifiedBenchmarks(&collector);
   if (print_ratios) collector.print_ratios(stdout);
   benchmark::Shutdown();
-  return 0;
+  // The JSON file is complete once RunSpecifiedBenchmarks returns.
+  return page_directory.empty() ? 0 : bench::report_saved_run(run_json, page_directory);
 }

@@ -1,7 +1,9 @@
 #include "ratio_report.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <utility>
 
@@ -16,7 +18,15 @@ std::vector<std::string> compiled_arch_names() {
   for (Arch arch : kCompiledArchs) names.emplace_back(arch_name(arch));
   return names;
 }
+
+std::string times(double ratio) { return fmt::format("{:.2f}x", ratio); }
+std::string millions(double rate) { return fmt::format("{:.0f}", rate / 1e6); }
 }  // namespace
+
+void RatioCollector::keep(const std::string& name, double items_per_second, int repetitions) {
+  throughput_[name] = items_per_second;
+  repetitions_ = std::max(repetitions_, repetitions);
+}
 
 void RatioCollector::ReportRuns(const std::vector<Run>& runs) {
   display_->ReportRuns(runs);
@@ -26,7 +36,7 @@ void RatioCollector::ReportRuns(const std::vector<Run>& runs) {
     if (items == run.counters.end()) continue;
     const bool single = run.run_type == Run::RT_Iteration && run.repetitions <= 1;
     const bool median = run.run_type == Run::RT_Aggregate && run.aggregate_name == "median";
-    if (single || median) throughput_[run.run_name.str()] = items->second;
+    if (single || median) keep(run.run_name.str(), items->second, int(run.repetitions));
   }
 }
 
@@ -39,22 +49,41 @@ void RatioCollector::load_json(const std::string& path) {
   } catch (const nlohmann::json::exception& error) {
     throw std::runtime_error(path + ": " + error.what());
   }
+  if (run.contains("context") && run["context"].is_object()) context_ = run["context"];
   // Google Benchmark's format: "benchmarks": [{run_name, run_type, aggregate_name,
   // items_per_second, repetitions}, ...]; the same choice as ReportRuns.
   for (const nlohmann::json& entry : run.value("benchmarks", nlohmann::json::array())) {
     if (!entry.contains("items_per_second") || entry.value("error_occurred", false)) continue;
-    const bool single = entry.value("run_type", "") == "iteration" && entry.value("repetitions", 1) <= 1;
+    const int repetitions = entry.value("repetitions", 1);
+    const bool single = entry.value("run_type", "") == "iteration" && repetitions <= 1;
     const bool median = entry.value("run_type", "") == "aggregate" &&
                         entry.value("aggregate_name", "") == "median";
     if (single || median)
-      throughput_[entry.value("run_name", "")] = entry["items_per_second"].get<double>();
+      keep(entry.value("run_name", ""), entry["items_per_second"].get<double>(), repetitions);
   }
 }
 
+std::vector<RatioTable> RatioCollector::ratio_tables() const {
+  std::vector<RatioTable> tables;
+  const auto add = [&](RatioKind kind, std::optional<tools::Table> table) {
+    if (table) tables.push_back({kind, std::move(*table)});
+  };
+  add(RatioKind::math, math_ratios());
+  add(RatioKind::lobe, lobe_ratios());
+  add(RatioKind::fragment, fragment_ratios());
+  add(RatioKind::span, span_ratios());
+  add(RatioKind::tile, tile_ratios());
+  add(RatioKind::sampling, sampling_ratios());
+  return tables;
+}
+
 void RatioCollector::print_ratios(std::FILE* out) const {
-  const bool math = print_math_ratios(out), lobes = print_lobe_ratios(out);
-  const bool shapes = print_call_shape_ratios(out), sampling = print_sampling_ratios(out);
-  if (!math && !lobes && !shapes && !sampling)
+  const std::vector<RatioTable> tables = ratio_tables();
+  for (const RatioTable& table : tables) {
+    std::fputs("\n", out);
+    table.table.print(tools::Format::markdown, out);
+  }
+  if (tables.empty())
     std::fputs("kutlog-bench: no ratios: the run has no kernel together with its peer "
                "(math/<f>/kutlog_u10 with xsimd, lobe/... with pow_xsimd at the same n, or "
                "sample/sample_kutlog with sample_blinn_pow)\n",
@@ -66,83 +95,86 @@ double RatioCollector::rate(const std::string& name) const {
   return found == throughput_.end() ? 0.0 : found->second;
 }
 
-bool RatioCollector::print_lobe_ratios(std::FILE* out) const {
+std::optional<tools::Table> RatioCollector::lobe_ratios() const {
   // Throughput of each lobe kernel over that of pow_xsimd at the same n and arch.
-  bool header = false;
+  tools::Table table({"arch", "n", "k", "pow_xsimd (M/s)", "kutlog_precise", "kutlog_fast",
+                      "kutlog_perlane", "pow_precise", "schlick"});
+  bool any = false;
   for (const std::string& arch : compiled_arch_names())
     for (int n : {10, 100, 1000}) {
       const std::string tail = "/arch:" + arch;
       const std::string at_n = "/n:" + std::to_string(n);
       const double pow_xsimd = rate("lobe/pow_xsimd" + at_n + tail);
       if (pow_xsimd == 0) continue;
-      if (!header) {
-        std::fprintf(out,
-                     "\n| arch | n | k | pow_xsimd (M/s) | kutlog_precise | kutlog_fast | "
-                     "kutlog_perlane | pow_precise | schlick |\n"
-                     "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-        header = true;
-      }
+      any = true;
       for (int k : {1, 3, 5}) {
         const std::string at_k = at_n + "/k:" + std::to_string(k);
-        std::fprintf(out, "| %s | %d | %d | %.0f | %.2fx | %.2fx | %.2fx | %.2fx | %.2fx |\n",
-                     arch.c_str(), n, k, pow_xsimd / 1e6,
-                     rate("lobe/kutlog_precise" + at_k + tail) / pow_xsimd,
-                     rate("lobe/kutlog_fast" + at_k + tail) / pow_xsimd,
-                     rate("lobe/kutlog_perlane" + at_k + tail) / pow_xsimd,
-                     rate("lobe/pow_precise" + at_n + tail) / pow_xsimd,
-                     rate("lobe/schlick" + at_n + tail) / pow_xsimd);
+        table.add_row({arch, std::to_string(n), std::to_string(k), millions(pow_xsimd),
+                       times(rate("lobe/kutlog_precise" + at_k + tail) / pow_xsimd),
+                       times(rate("lobe/kutlog_fast" + at_k + tail) / pow_xsimd),
+                       times(rate("lobe/kutlog_perlane" + at_k + tail) / pow_xsimd),
+                       times(rate("lobe/pow_precise" + at_n + tail) / pow_xsimd),
+                       times(rate("lobe/schlick" + at_n + tail) / pow_xsimd)});
       }
     }
-  return header;
+  return any ? std::optional(std::move(table)) : std::nullopt;
 }
 
-bool RatioCollector::print_call_shape_ratios(std::FILE* out) const {
-  // Per fragment: ns per call of each fragment function, and kutlog's speed-up over each peer.
-  bool printed = false;
+std::optional<tools::Table> RatioCollector::fragment_ratios() const {
+  // Per fragment: ns per call of each fragment function, and its speed over each peer's.
+  tools::Table table({"per fragment, n = 1000", "inputs", "k", "ns/call", "powf / it",
+                      "pow(double) / it"});
+  bool any = false;
   for (std::size_t count : {kArrayLength, kFragmentInputsUnlearned})
     for (int k : {3, 5}) {
       const std::string at = "/n:1000/k:" + std::to_string(k) + fragment_inputs_token(count);
       const double kutlog = rate("fragment/scalar_kutlog" + at), fast = rate("fragment/scalar_kutlog_fast" + at);
       const double powf = rate("fragment/scalar_powf" + at), pow_double = rate("fragment/scalar_pow_double" + at);
       if (kutlog == 0 || powf == 0 || pow_double == 0) continue;
-      if (!printed)
-        std::fprintf(out,
-                     "\n| per fragment, n = 1000 | inputs | k | ns/call | powf / it | pow(double) / it |\n"
-                     "|---|---:|---:|---:|---:|---:|\n");
-      printed = true;
+      any = true;
       for (auto [name, rate_of] : {std::pair{"scalar_kutlog", kutlog}, std::pair{"scalar_kutlog_fast", fast},
                                    std::pair{"scalar_powf", powf}, std::pair{"scalar_pow_double", pow_double}})
-        std::fprintf(out, "| %s | %zu | %d | %.2f | %.2fx | %.2fx |\n", name, count, k, 1e9 / rate_of,
-                     rate_of / powf, rate_of / pow_double);
+        table.add_row({name, std::to_string(count), std::to_string(k),
+                       fmt::format("{:.2f}", 1e9 / rate_of), times(rate_of / powf),
+                       times(rate_of / pow_double)});
     }
+  return any ? std::optional(std::move(table)) : std::nullopt;
+}
+
+std::optional<tools::Table> RatioCollector::span_ratios() const {
   // Spans: ns per element of the array eval (and of shade from cosines) at each span length,
   // and its cost over that of a 4096 span.
-  bool spans = false;
+  tools::Table table({"span, n = 1000", "arch", "k", "ns/element at 1 / 16 / 157 / 4096",
+                      "cost over 4096's at 1 / 16 / 157", "one-element call / powf"});
+  bool any = false;
   for (const std::string& arch : compiled_arch_names())
     for (const char* kernel : {"kutlog_precise", "kutlog_fast", "shade_cosines"})
       for (int k : {3, 5}) {
         const std::string name = std::string("span/") + kernel + "/n:1000/k:" + std::to_string(k);
-        const std::string tail = std::string("/arch:") + arch;
+        const std::string tail = "/arch:" + arch;
         const double whole = rate(name + "/count:4096" + tail);
         if (whole == 0) continue;
-        if (!spans)
-          std::fprintf(out, "\n| span, n = 1000 | arch | k | ns/element at 1 / 16 / 157 / 4096 | "
-                            "cost over 4096's at 1 / 16 / 157 | one-element call / powf |\n"
-                            "|---|---|---:|---|---|---:|\n");
-        spans = printed = true;
+        any = true;
         const double one = rate(name + "/count:1" + tail), sixteen = rate(name + "/count:16" + tail),
                      span157 = rate(name + "/count:157" + tail);
         // A one-element call against one powf call (the fragment benchmark's, same k).
         const double powf = rate("fragment/scalar_powf/n:1000/k:" + std::to_string(k));
-        char against_powf[16] = "";
-        if (powf > 0) std::snprintf(against_powf, sizeof against_powf, "%.2fx", powf / one);
-        std::fprintf(out, "| %s | %s | %d | %.2f / %.3f / %.3f / %.3f | %.1fx / %.2fx / %.2fx | %s |\n",
-                     kernel, arch.c_str(), k, 1e9 / one, 1e9 / sixteen, 1e9 / span157, 1e9 / whole,
-                     whole / one, whole / sixteen, whole / span157, against_powf);
+        table.add_row({kernel, arch, std::to_string(k),
+                       fmt::format("{:.2f} / {:.3f} / {:.3f} / {:.3f}", 1e9 / one, 1e9 / sixteen,
+                                   1e9 / span157, 1e9 / whole),
+                       fmt::format("{:.1f}x / {:.2f}x / {:.2f}x", whole / one, whole / sixteen,
+                                   whole / span157),
+                       powf > 0 ? times(powf / one) : ""});
       }
+  return any ? std::optional(std::move(table)) : std::nullopt;
+}
+
+std::optional<tools::Table> RatioCollector::tile_ratios() const {
   // Tiles: ns per element of the stream API on 16x16 tiles, and its cost over the array eval's
   // at 4096 (the lobe alone, same variant and normalization).
-  bool tiles = false;
+  tools::Table table({"shade, 16x16 tiles, n = 1000", "arch", "k",
+                      "ns/element from cosines / directions", "cost over the array eval's at 4096"});
+  bool any = false;
   for (const std::string& arch : compiled_arch_names())
     for (int k : {3, 5}) {
       const std::string at = "/n:1000/k:" + std::to_string(k);
@@ -151,56 +183,49 @@ bool RatioCollector::print_call_shape_ratios(std::FILE* out) const {
                    directions = rate("shade/directions" + at + tail),
                    lobe = rate("span/kutlog_precise" + at + "/count:4096/arch:" + arch);
       if (cosines == 0 || directions == 0 || lobe == 0) continue;
-      if (!tiles)
-        std::fprintf(out, "\n| shade, 16x16 tiles, n = 1000 | arch | k | ns/element from cosines / "
-                          "directions | cost over the array eval's at 4096 |\n"
-                          "|---|---|---:|---|---|\n");
-      tiles = printed = true;
-      std::fprintf(out, "| shade | %s | %d | %.3f / %.3f | %.2fx / %.2fx |\n", arch.c_str(), k,
-                   1e9 / cosines, 1e9 / directions, lobe / cosines, lobe / directions);
+      any = true;
+      table.add_row({"shade", arch, std::to_string(k),
+                     fmt::format("{:.3f} / {:.3f}", 1e9 / cosines, 1e9 / directions),
+                     fmt::format("{} / {}", times(lobe / cosines), times(lobe / directions))});
     }
-  return printed;
+  return any ? std::optional(std::move(table)) : std::nullopt;
 }
 
-bool RatioCollector::print_sampling_ratios(std::FILE* out) const {
+std::optional<tools::Table> RatioCollector::sampling_ratios() const {
   // Throughput of the lobe sampler over that of pow-based Blinn sampling, same n and arch.
-  bool header = false;
+  tools::Table table({"sampling, n = 1000", "arch", "sample_blinn_pow (M/s)",
+                      "sample_kutlog / sample_blinn_pow at k = 1 / 3 / 5"});
+  bool any = false;
   for (const std::string& arch : compiled_arch_names()) {
     const std::string tail = "/arch:" + arch;
     const double blinn = rate("sample/sample_blinn_pow/n:1000" + tail);
     if (blinn == 0) continue;
-    if (!header)
-      std::fprintf(out, "\n| sampling, n = 1000 | arch | sample_blinn_pow (M/s) | sample_kutlog / "
-                        "sample_blinn_pow at k = 1 / 3 / 5 |\n|---|---|---:|---|\n");
-    header = true;
-    std::fprintf(out, "| microfacet | %s | %.0f | %.2fx / %.2fx / %.2fx |\n", arch.c_str(),
-                 blinn / 1e6, rate("sample/sample_kutlog/n:1000/k:1" + tail) / blinn,
-                 rate("sample/sample_kutlog/n:1000/k:3" + tail) / blinn,
-                 rate("sample/sample_kutlog/n:1000/k:5" + tail) / blinn);
+    any = true;
+    table.add_row({"microfacet", arch, millions(blinn),
+                   fmt::format("{} / {} / {}", times(rate("sample/sample_kutlog/n:1000/k:1" + tail) / blinn),
+                               times(rate("sample/sample_kutlog/n:1000/k:3" + tail) / blinn),
+                               times(rate("sample/sample_kutlog/n:1000/k:5" + tail) / blinn))});
   }
-  return header;
+  return any ? std::optional(std::move(table)) : std::nullopt;
 }
 
-bool RatioCollector::print_math_ratios(std::FILE* out) const {
-  bool header = false;
+std::optional<tools::Table> RatioCollector::math_ratios() const {
+  tools::Table table({"function", "arch", "kutlog_u10 (M/s)", "xsimd (M/s)", "kutlog / xsimd",
+                      "std scalar (M/s)", "kutlog / std"});
+  bool any = false;
   for (const char* function : {"acos", "cos", "exp", "log", "pow"})
     for (const std::string& arch : compiled_arch_names()) {
-      const std::string suffix = std::string("/arch:") + arch;
+      const std::string suffix = "/arch:" + arch;
       const double ours = rate(std::string("math/") + function + "/kutlog_u10" + suffix);
       const double xsimd = rate(std::string("math/") + function + "/xsimd" + suffix);
       const double scalar = rate(std::string("math/") + function + "/std/arch:scalar");
       if (ours == 0) continue;
-      if (!header) {
-        std::fprintf(out,
-                     "\n| function | arch | kutlog_u10 (M/s) | xsimd (M/s) | kutlog / xsimd | "
-                     "std scalar (M/s) | kutlog / std |\n|---|---|---:|---:|---:|---:|---:|\n");
-        header = true;
-      }
-      std::fprintf(out, "| %s | %s | %.0f | %.0f | %.2f | %.0f | %.1f |\n", function, arch.c_str(),
-                   ours / 1e6, xsimd / 1e6, xsimd ? ours / xsimd : 0.0, scalar / 1e6,
-                   scalar ? ours / scalar : 0.0);
+      any = true;
+      table.add_row({function, arch, millions(ours), millions(xsimd),
+                     fmt::format("{:.2f}", xsimd ? ours / xsimd : 0.0), millions(scalar),
+                     fmt::format("{:.1f}", scalar ? ours / scalar : 0.0)});
     }
-  return header;
+  return any ? std::optional(std::move(table)) : std::nullopt;
 }
 
 }  // namespace kutlog::bench

@@ -7,10 +7,22 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "common/table.hpp"
+
 namespace kutlog::bench {
+
+// What a ratio table compares; the benchmark page explains each kind.
+enum class RatioKind { math, lobe, fragment, span, tile, sampling };
+
+struct RatioTable {
+  RatioKind kind;
+  tools::Table table;
+};
 
 class RatioCollector : public benchmark::BenchmarkReporter {
  public:
@@ -22,25 +34,36 @@ class RatioCollector : public benchmark::BenchmarkReporter {
 
   // items/s by benchmark name: the median of the repetitions if there were several.
   const std::map<std::string, double>& throughput() const { return throughput_; }
-  // Reads the throughputs of a run saved with --benchmark_out=FILE (JSON) instead; throws
-  // std::runtime_error naming the file if it cannot be read or parsed.
+  // Reads the throughputs of a run saved with --benchmark_out=FILE (JSON) instead, and its
+  // context; throws std::runtime_error naming the file if it cannot be read or parsed.
   void load_json(const std::string& path);
-  // Prints the ratio tables (markdown) of the kernels measured in this run: math kernels
-  // against xsimd and std, lobes against pow_xsimd at the same n and arch, the per-fragment
-  // eval against powf and pow(double), spans against a 4096 array, the lobe sampler against
-  // pow-based Blinn sampling.
+  // The "context" object of the run read by load_json (machine, date, kutlog_* fields).
+  const nlohmann::json& context() const { return context_; }
+  // The largest repetition count among the figures kept: 1, or the count each median is of.
+  int repetitions() const { return repetitions_; }
+
+  // The ratio tables of the kernels measured in this run, each only if the run has something
+  // for it: math kernels against xsimd and std, lobes against pow_xsimd at the same n and arch,
+  // the per-fragment eval against powf and pow(double), spans against a 4096 array, tiles of
+  // the stream API against the array eval, the lobe sampler against pow-based Blinn sampling.
+  std::vector<RatioTable> ratio_tables() const;
+  // Prints them as markdown, or says that the run has no kernel together with its peer.
   void print_ratios(std::FILE* out) const;
 
  private:
   double rate(const std::string& name) const;  // 0 if not measured
-  // Each prints its table if the run has something for it, and says whether it did.
-  bool print_math_ratios(std::FILE* out) const;
-  bool print_lobe_ratios(std::FILE* out) const;
-  bool print_call_shape_ratios(std::FILE* out) const;
-  bool print_sampling_ratios(std::FILE* out) const;
+  void keep(const std::string& name, double items_per_second, int repetitions);
+  std::optional<tools::Table> math_ratios() const;
+  std::optional<tools::Table> lobe_ratios() const;
+  std::optional<tools::Table> fragment_ratios() const;
+  std::optional<tools::Table> span_ratios() const;
+  std::optional<tools::Table> tile_ratios() const;
+  std::optional<tools::Table> sampling_ratios() const;
 
   std::unique_ptr<benchmark::BenchmarkReporter> display_;
   std::map<std::string, double> throughput_;
+  nlohmann::json context_ = nlohmann::json::object();
+  int repetitions_ = 1;
 };
 
 }  // namespace kutlog::bench

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The main job: install what is needed, build, and write everything kutlog shows into one
-# output folder (default out/): the article's tables, the ULP table, a benchmark summary, the
-# figures, the renders, the white-furnace plot, the path-traced sampling comparison and a frame
-# of the example rasterizer.
+# output folder (default out/): the article's tables, the ULP table, a benchmark summary and
+# its page (docs/benchmarks.md), the figures, the renders, the white-furnace plot, the
+# path-traced sampling comparison and a frame of the example rasterizer.
 # About 10 minutes on 2 cores, most of it the ULP sweep over every float.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -30,6 +30,7 @@ section "kutlog-bench: lobes at n = 1000 against pow (xsimd), every arch, median
   --benchmark_out="$out/bench.json" --benchmark_out_format=json >/dev/null 2>"$out/bench.log" ||
   { cat "$out/bench.log"; exit 1; }
 "$build_dir/bench/kutlog-bench" --kutlog_ratios_from="$out/bench.json" | tee "$out/bench.md"
+"$build_dir/bench/kutlog-bench" --kutlog_ratios_from="$out/bench.json" --kutlog_page="$out/benchmarks"
 
 section "figures (data: kutlog-curves, CSV; drawing: matplotlib), renders, white furnace"
 # Debian's Python, where python3-matplotlib is installed (a python3 earlier on PATH may lack it).

@@ -1,0 +1,149 @@
+#include "benchmark_page.hpp"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <sstream>
+#include <string_view>
+#include <vector>
+
+namespace kutlog::bench {
+namespace {
+std::string text_of(const nlohmann::json& context, const char* key) {
+  const auto found = context.find(key);
+  if (found == context.end()) return "unknown";
+  return found->is_string() ? found->get<std::string>() : found->dump();
+}
+
+// "L1 Data 32 KiB, ..., L3 Unified 32 MiB (shared by 2)", from Google Benchmark's "caches".
+std::string caches_of(const nlohmann::json& context) {
+  std::vector<std::string> caches;
+  for (const nlohmann::json& cache : context.value("caches", nlohmann::json::array())) {
+    const double size = cache.value("size", 0.0);
+    std::string text = fmt::format("L{} {} ", cache.value("level", 0), cache.value("type", ""));
+    text += size >= 1 << 20 ? fmt::format("{:g} MiB", size / (1 << 20)) : fmt::format("{:g} KiB", size / 1024);
+    if (const int sharing = cache.value("num_sharing", 0); sharing > 1)
+      text += fmt::format(" (shared by {})", sharing);
+    caches.push_back(text);
+  }
+  return caches.empty() ? "unknown" : fmt::format("{}", fmt::join(caches, ", "));
+}
+
+// What each table compares, and how to read it.
+std::string_view explanation(RatioKind kind) {
+  switch (kind) {
+    case RatioKind::math:
+      return "## SIMD math kernels\n\n"
+             "Millions of floats per second over arrays of 4096 floats, one thread: each `_u10`\n"
+             "kernel (within 1 ULP, [accuracy](../accuracy.md)), xsimd's function of the same\n"
+             "arch (less accurate) and the standard library's scalar function (`std::acos`, ...,\n"
+             "`std::pow(x, 1000)`); the ratios are kutlog's throughput over the peer's.\n";
+    case RatioKind::lobe:
+      return "## Lobes over arrays\n\n"
+             "Throughput of each lobe over that of `t^n` by `xsimd::pow` (`pow_xsimd`, what a\n"
+             "renderer has without kutlog) at the same n and arch: arrays of 4096 t, uniform in\n"
+             "angle over twice the lobe's support, in one L1-resident block, one thread, through\n"
+             "the public array functions with `Normalization::exact_coef`. `kutlog_perlane` is a\n"
+             "`PerLaneLobe` whose n per lane comes from a glossiness map, log-uniform in\n"
+             "[n/2, 2n]; `pow_precise` is Blinn-Phong by kutlog's 1-ULP `pow`; `schlick` is\n"
+             "Schlick's rational approximation of Blinn-Phong. Above 1x, faster than `pow_xsimd`.\n";
+    case RatioKind::fragment:
+      return "## One fragment per call\n\n"
+             "The scalar `lobe.eval(t)` called once per fragment in a loop, against `powf(t, n)`\n"
+             "and `std::pow` in double, n = 1000, t uniform in angle over twice the lobe's\n"
+             "support: half the calls fall past the cut-off, where `eval(t)` returns 0 after one\n"
+             "branch. Over 4096 inputs run again and again, the branch predictor learns part of\n"
+             "which do; over 262144 it cannot, which is the scalar path's worst case (a\n"
+             "rasterizer's fragments past the cut-off come in runs). `/ it` is the row's speed\n"
+             "over the peer's. The benchmark is compiled with the compiler's default flags.\n";
+    case RatioKind::span:
+      return "## Spans\n\n"
+             "The same 4096 inputs through the array `eval` (and through `shade` from cosines and\n"
+             "N.L) in spans of 1, 16, 157 and 4096 elements: nanoseconds per element, the cost of\n"
+             "each short span per element over that of 4096, and a one-element call against one\n"
+             "`powf` call. A short span pays the call and the dispatch; `shade` also fills its\n"
+             "buffers, so it pays off from a tile or a span of about a hundred fragments.\n";
+    case RatioKind::tile:
+      return "## Tiles of the stream API\n\n"
+             "`kutlog::shade` with default options on 16x16 tiles of fragments, each covered but\n"
+             "for a corner cut off by a triangle's edge (the lane mask), from cosines and N.L, or\n"
+             "from normals under one directional light and viewer: nanoseconds per element, and\n"
+             "the cost over that of the array `eval` at 4096 (the lobe alone).\n";
+    case RatioKind::sampling:
+      return "## Sampling\n\n"
+             "Throughput of `LobeSampler::sample` over arrays of 4096 uniform pairs (half vectors\n"
+             "of the microfacet use, with their pdf) over that of pow-based Blinn sampling of the\n"
+             "same n (`cos(theta_h) = u^(1/(n+1))` by `xsimd::pow`, `xsimd::sincos` for the\n"
+             "azimuth), same arch.\n";
+  }
+  return "";
+}
+}  // namespace
+
+std::string machine_slug(const nlohmann::json& context) {
+  std::string model = context.value("kutlog_cpu", "unknown cpu");
+  model = model.substr(0, model.find('@'));
+  std::string lower;
+  for (char c : model) lower += char(std::tolower(static_cast<unsigned char>(c)));
+  for (std::string_view mark : {"(r)", "(tm)"})
+    for (std::size_t at; (at = lower.find(mark)) != std::string::npos;) lower.erase(at, mark.size());
+  std::vector<std::string> words;
+  std::istringstream split(lower);
+  for (std::string word; split >> word;) {
+    const bool cores = word.size() > 5 && word.ends_with("-core");
+    if (word == "cpu" || word == "processor" || cores) continue;
+    words.push_back(word);
+  }
+  const std::string archs = context.value("kutlog_archs", "");
+  words.push_back(archs.substr(0, archs.find(' ')));
+  std::string slug;
+  for (const std::string& word : words)
+    for (char c : word + "-")
+      if (std::isalnum(static_cast<unsigned char>(c))) slug += c;
+      else if (!slug.empty() && slug.back() != '-') slug += '-';
+  while (!slug.empty() && slug.back() == '-') slug.pop_back();
+  return slug;
+}
+
+void write_benchmark_page(std::FILE* out, const RatioCollector& run) {
+  const nlohmann::json& context = run.context();
+  const std::string archs = text_of(context, "kutlog_archs");
+  fmt::print(out, "# kutlog-bench on {}, {}\n\n", text_of(context, "kutlog_cpu"),
+             archs.substr(0, archs.find(' ')));
+  fmt::print(out,
+             "Written by `kutlog-bench --kutlog_page` from the JSON of the one run below; every\n"
+             "figure on this page comes from that run. Regenerate it by running the command\n"
+             "again, or from a saved run with\n"
+             "`build/bench/kutlog-bench --kutlog_ratios_from=RUN.json --kutlog_page=docs/benchmarks`\n"
+             "([benchmarks](../benchmarks.md)).\n\n");
+  tools::Table provenance({"run", ""});
+  provenance.add_row({"CPU", text_of(context, "kutlog_cpu")});
+  provenance.add_row({"archs kutlog ran (best first)", archs});
+  provenance.add_row({"CPUs", fmt::format("{} at {} MHz, frequency scaling {}",
+                                          text_of(context, "num_cpus"),
+                                          text_of(context, "mhz_per_cpu"),
+                                          context.value("cpu_scaling_enabled", false) ? "on" : "off")});
+  provenance.add_row({"caches", caches_of(context)});
+  std::vector<std::string> load;
+  for (const nlohmann::json& value : context.value("load_avg", nlohmann::json::array()))
+    load.push_back(fmt::format("{:.2f}", value.get<double>()));
+  provenance.add_row({"load average at the start", load.empty() ? "unknown" : fmt::format("{}", fmt::join(load, ", "))});
+  provenance.add_row({"compiler", text_of(context, "kutlog_compiler")});
+  provenance.add_row({"build type and flags", fmt::format("{}, `{}`", text_of(context, "kutlog_build_type"),
+                                                          text_of(context, "kutlog_cxx_flags"))});
+  provenance.add_row({"flags of each arch's kernels", text_of(context, "kutlog_arch_flags")});
+  provenance.add_row({"Google Benchmark library build", text_of(context, "library_build_type")});
+  provenance.add_row({"commit", text_of(context, "kutlog_commit")});
+  provenance.add_row({"date", text_of(context, "date")});
+  provenance.add_row({"figures", run.repetitions() > 1
+                                     ? fmt::format("the median of {} repetitions", run.repetitions())
+                                     : std::string("one repetition")});
+  provenance.print(tools::Format::markdown, out);
+  fmt::print(out, "\nThe command:\n\n    {}\n", text_of(context, "kutlog_command"));
+  for (const RatioTable& table : run.ratio_tables()) {
+    fmt::print(out, "\n{}\n", explanation(table.kind));
+    table.table.print(tools::Format::markdown, out);
+  }
+}
+
+}  // namespace kutlog::bench
