@@ -281,7 +281,8 @@ int main(int argc, char** argv) {
   bench::RatioCollector collector;
   benchmark::RunSpecifiedBenchmarks(&collector);
   if (print_ratios) collector.print_ratios(stdout);
-  benchmark::Shutdown();
   // The JSON file is complete once RunSpecifiedBenchmarks returns.
-  return page_directory.empty() ? 0 : bench::report_saved_run(run_json, page_directory);
+  const int status = page_directory.empty() ? 0 : bench::report_saved_run(run_json, page_directory);
+  benchmark::Shutdown();
+  return status;
 }

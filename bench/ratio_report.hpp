@@ -6,7 +6,6 @@
 
 #include <cstdio>
 #include <map>
-#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -60,7 +59,9 @@ class RatioCollector : public benchmark::BenchmarkReporter {
   std::optional<tools::Table> tile_ratios() const;
   std::optional<tools::Table> sampling_ratios() const;
 
-  std::unique_ptr<benchmark::BenchmarkReporter> display_;
+  // Google Benchmark's one default display reporter: it keeps ownership (the same object for
+  // every caller), so that two collectors cannot delete it twice.
+  benchmark::BenchmarkReporter* display_;
   std::map<std::string, double> throughput_;
   nlohmann::json context_ = nlohmann::json::object();
   int repetitions_ = 1;
