@@ -3,7 +3,7 @@
 // `promised_ulp` is the contract in the kernel's name (_u10: 1.0 ULP). `measured_ulp` is the
 // maximal error measured on each platform, over its archs, rounded up; `max_ulp()` is the one
 // of the platform compiled for (the lobes' columns likewise; their aarch64 bounds are the x86
-// ones, which the sampled sweeps stay within: README). kMeasurements says how each platform's
+// ones, which the sampled sweeps stay within: docs/accuracy.md). kMeasurements says how each platform's
 // column was measured (the command, and whether the sweep covered every float or a sample).
 // The tests assert both
 // the promise and this platform's measured bound, so neither can drift from the code. README's

@@ -95,7 +95,7 @@ inline constexpr CoefSample kFigure4[] = {
 inline constexpr double kFigure4PrintedHalfUnit = 0.0005;
 
 // The epicenter zone of the highlight: the angles where F_B = cos^n(x) >= this. The article
-// does not define it in its text; with 0.6 its Table 1 is reproduced (see README).
+// does not define it in its text; with 0.6 its Table 1 is reproduced (docs/article.md).
 inline constexpr double kEpicenterFloor = 0.6;
 
 // Table 1 recomputed: 100 * max over integer n in [k+1, 1000] of the relative error of
