@@ -1,6 +1,7 @@
 // Benchmarks of the shading lobes, named with the tokens the ratio report reads:
 // lobe/<kernel>/n:<n>/k:<k>/arch:<arch>, kernel in kutlog_precise, kutlog_fast,
-// kutlog_perlane, pow_xsimd, pow_precise, schlick, copy; and the spans of a renderer,
+// kutlog_perlane, pow_xsimd, pow_poly_precise, pow_poly_fast, pow_precise, schlick, copy; and
+// the spans of a renderer,
 // span/<kernel>/n:1000/k:<k>/count:<count>/arch:<arch> (kernel in kutlog_precise, kutlog_fast
 // and shade_cosines, the stream API's), and the stream API on 16x16 tiles,
 // shade/<form>/n:1000/k:<k>/count:256/arch:<arch>, form in cosines, directions.
@@ -14,6 +15,7 @@
 
 #include "inputs.hpp"
 #include "kutlog/lobe.hpp"
+#include "kutlog/reference.hpp"
 #include "kutlog/dispatch.hpp"
 #include "kutlog/shade.hpp"
 
@@ -86,6 +88,16 @@ inline void register_lobe_benchmarks(Arch arch) {
         blinn_phong_xsimd(x, out, N, exponent);
       });
     });
+    // The fast pow a speed-minded user writes for one material (kutlog::PowerPoly), at each
+    // lobe variant's accuracy, the normalization folded in as kutlog's.
+    for (Variant variant : {Variant::precise, Variant::fast})
+      add(variant == Variant::precise ? "pow_poly_precise" : "pow_poly_fast", "",
+          [=](benchmark::State& state) {
+            const PowerPoly power(n, variant, ref::blinn_phong_exact_coef(n));
+            run_array(state, arch, t, t, [&](const float* x, const float*, float* out) {
+              power.eval(x, out, N);
+            });
+          });
     add("pow_precise", "", [=](benchmark::State& state) {
       run_array(state, arch, t, t, [&](const float* x, const float*, float* out) {
         blinn_phong_u10(x, out, N, exponent);

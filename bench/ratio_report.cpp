@@ -67,7 +67,8 @@ double RatioCollector::rate(const std::string& name) const {
 }
 
 bool RatioCollector::print_lobe_ratios(std::FILE* out) const {
-  // Throughput of each lobe kernel over that of pow_xsimd at the same n and arch.
+  // Throughput of each lobe kernel over that of pow_xsimd at the same n and arch, and of each
+  // variant over the polynomial pow of the same accuracy (kutlog::PowerPoly), the strongest peer.
   bool header = false;
   for (const std::string& arch : compiled_arch_names())
     for (int n : {10, 100, 1000}) {
@@ -78,19 +79,25 @@ bool RatioCollector::print_lobe_ratios(std::FILE* out) const {
       if (!header) {
         std::fprintf(out,
                      "\n| arch | n | k | pow_xsimd (M/s) | kutlog_precise | kutlog_fast | "
-                     "kutlog_perlane | pow_precise | schlick |\n"
-                     "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+                     "kutlog_perlane | pow_precise | schlick | precise / pow_poly_precise | "
+                     "fast / pow_poly_fast |\n"
+                     "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
         header = true;
       }
+      const double poly_precise = rate("lobe/pow_poly_precise" + at_n + tail),
+                   poly_fast = rate("lobe/pow_poly_fast" + at_n + tail);
       for (int k : {1, 3, 5}) {
         const std::string at_k = at_n + "/k:" + std::to_string(k);
-        std::fprintf(out, "| %s | %d | %d | %.0f | %.2fx | %.2fx | %.2fx | %.2fx | %.2fx |\n",
-                     arch.c_str(), n, k, pow_xsimd / 1e6,
-                     rate("lobe/kutlog_precise" + at_k + tail) / pow_xsimd,
-                     rate("lobe/kutlog_fast" + at_k + tail) / pow_xsimd,
+        const double precise = rate("lobe/kutlog_precise" + at_k + tail),
+                     fast = rate("lobe/kutlog_fast" + at_k + tail);
+        std::fprintf(out,
+                     "| %s | %d | %d | %.0f | %.2fx | %.2fx | %.2fx | %.2fx | %.2fx | %.2fx | "
+                     "%.2fx |\n",
+                     arch.c_str(), n, k, pow_xsimd / 1e6, precise / pow_xsimd, fast / pow_xsimd,
                      rate("lobe/kutlog_perlane" + at_k + tail) / pow_xsimd,
                      rate("lobe/pow_precise" + at_n + tail) / pow_xsimd,
-                     rate("lobe/schlick" + at_n + tail) / pow_xsimd);
+                     rate("lobe/schlick" + at_n + tail) / pow_xsimd,
+                     poly_precise ? precise / poly_precise : 0.0, poly_fast ? fast / poly_fast : 0.0);
       }
     }
   return header;

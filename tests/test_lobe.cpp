@@ -88,6 +88,62 @@ TEST_P(LobePerArch, BaselinesAgainstTheReference) {
   }
 }
 
+// PowerPoly, the benchmarks' strongest pow: every float of [t_zero, 1] (strided to about 2^18
+// of them, every float within 2^12 of each end), every 65521st below, and the data rule's
+// special values, against scale t^n in double, for both variants, normalized (the Blinn-Phong
+// coef) and not. The bound must be reached to a quarter.
+TEST_P(LobePerArch, PowerPolyWithinItsBoundWithTheDataRule) {
+  std::vector<float> t;
+  for (Variant variant : tools::kLobeVariants) {
+    const double bound = variant == Variant::precise ? 0x1p-22 : 0x1p-16;
+    double largest = 0;
+    for (double n : {1.0, 2.0, 10.0, 44.5, 100.0, 1000.0, 1e4, 1e6})
+      for (double scale : {1.0, ref::blinn_phong_exact_coef(n)}) {
+        const PowerPoly power(n, variant, scale);
+        const std::uint32_t zero_key = tools::order_key(power.kernel().t_zero),
+                            one_key = tools::order_key(1.0f), first = tools::order_key(-1.0f);
+        const std::uint32_t stride = std::max<std::uint32_t>(1, (one_key - zero_key) >> 18);
+        t = {1.5f, INFINITY, 0.0f, -0.0f, -1.0f, -INFINITY, 1e-40f, kNaN};
+        for (std::uint32_t key = first; key < zero_key; key += 65521)
+          t.push_back(tools::float_of_order_key(key));
+        for (std::uint32_t key = zero_key - std::min(zero_key - first, 1u << 12); key <= one_key;
+             key += key - zero_key < (1u << 12) || one_key - key < (2u << 12) ? 1 : stride)
+          t.push_back(tools::float_of_order_key(key));
+        std::vector<float> out(t.size());
+        power.eval(t.data(), out.data(), t.size());
+        const float peak = float(scale);
+        const std::string name = "n " + std::to_string(n) + ", scale " + std::to_string(scale);
+        for (std::size_t i = 0; i < t.size(); ++i) {
+          if (std::isnan(t[i])) {
+            ASSERT_TRUE(std::isnan(out[i])) << name;
+            continue;
+          }
+          if (t[i] >= 1) ASSERT_EQ(out[i], peak) << name << ", t " << t[i];
+          if (t[i] <= 0) ASSERT_EQ(out[i], 0.0f) << name << ", t " << t[i];
+          ASSERT_TRUE(out[i] >= 0 && out[i] <= peak) << name << ", t " << t[i] << ": " << out[i];
+          const double exact = t[i] <= 0 ? 0.0 : scale * std::pow(std::min(1.0, double(t[i])), n);
+          const double error = std::fabs(out[i] - exact) / scale;
+          ASSERT_LE(error, bound) << name << ", t " << t[i] << ": " << out[i] << " against "
+                                  << exact;
+          largest = std::max(largest, error);
+        }
+      }
+    EXPECT_GE(largest, bound / 4) << "a loose bound";
+    record_max(std::string("power_poly_") + (variant == Variant::precise ? "precise" : "fast"),
+               largest);
+    std::printf("PowerPoly %s: largest error %.3g of the peak (bound %.3g)\n",
+                variant == Variant::precise ? "precise" : "fast", largest, bound);
+  }
+}
+
+TEST(PowerPoly, InvalidParametersAreRefused) {
+  expect_invalid([] { PowerPoly(0, Variant::precise); }, "n", "finite and > 0");
+  expect_invalid([] { PowerPoly(NAN, Variant::fast); }, "n", "finite and > 0");
+  expect_invalid([] { PowerPoly(100, Variant::precise, -1); }, "scale", "(0, FLT_MAX]");
+  expect_invalid([] { PowerPoly(100, Variant::precise, 1e39); }, "scale", "(0, FLT_MAX]");
+}
+static_assert(!std::is_constructible_v<PowerPoly, double, double>);  // a variant, not a scale
+
 TEST_P(LobePerArch, AnyCountAndOffsetWritesOnlyTheOutput) {
   const Lobe lobe(100, 3, 0.5);
   // Each t's output from whole batches only (64 is a multiple of every arch's lane count), to

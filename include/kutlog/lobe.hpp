@@ -368,6 +368,41 @@ class PerLaneLobe {
   PerLaneKernel kernel_;
 };
 
+// What the polynomial power needs for one exponent, precomputed (kutlog/simd/lobe.hpp): with
+// x = t - 1 (or, where decomposed, t = 2^e (1 + x), 1 + x in [sqrt(1/2), sqrt(2))),
+// y = n log2 t = x L(x) (+ n e), then scale 2^y = 2^round(y) E(y - round(y)).
+struct PowerPolyKernel {
+  static constexpr int kMaxLogDegree = 12;
+  static constexpr int kPreciseExpDegree = 6, kFastExpDegree = 4;  // of E, by variant
+  bool decomposed = false;  // t_zero below sqrt(1/2): t's exponent taken apart first
+  float t_zero = 0;         // out = 0 at and below it, where scale t^n < the variant's bound / 2
+  float n = 1;
+  int log_degree = 1, exp_degree = 6;
+  std::array<float, kMaxLogDegree + 1> log{};  // n log2(1 + x) / x
+  std::array<float, 7> exp{};                  // scale 2^f, exp[0] = the float scale
+};
+
+// scale * t^n as the fast pow a speed-minded renderer writes for one material: 2^(n log2 t)
+// with short polynomials fitted for that n over the only t that matter (t^n above the bound),
+// the benchmarks' strongest pow-based peer, at each variant's accuracy (kutlog/accuracy.hpp).
+//   Contract: |out - scale t^n| <= 2^-22 scale (precise), 2^-16 scale (fast), for every float
+//   t; 0 <= out <= the float scale; t >= 1 gives the float scale, t <= 0 and t where
+//   scale t^n < half the bound give 0, NaN gives NaN.
+//   Setup: n finite > 0, scale finite > 0 (std::invalid_argument naming them otherwise).
+class PowerPoly {
+ public:
+  PowerPoly(double n, Variant variant = Variant::precise, double scale = 1);
+  template <class N, class V, class S>
+    requires(!std::is_same_v<V, Variant>)
+  PowerPoly(N, V, S) = delete;
+  // out[i] = scale * t[i]^n. Any count, any alignment, out may equal t.
+  void eval(const float* t, float* out, std::size_t count) const;
+  const PowerPolyKernel& kernel() const { return kernel_; }
+
+ private:
+  PowerPolyKernel kernel_;
+};
+
 // Baselines over arrays, same data rule, dispatched like the lobe. out[i] = scale * t[i]^n
 // with xsimd::pow (what users have today) or with pow_u10; Schlick's t / (n - n t + t).
 // For normalized Blinn-Phong pass scale = ref::blinn_phong_exact_coef(n) (kutlog/reference.hpp).

@@ -134,6 +134,29 @@ template <class Arch, std::size_t Inputs, class Kernel>
   store_partial<Arch>(Arch{}, out + i, value, tail);
 }
 
+// PowerPoly over an array: one loop per decomposition, variant (E's degree) and log degree,
+// picked per call by one lookup.
+template <class Arch, bool kDecomposed, int kExpDegree, int kLogDegree>
+void power_poly_loop(const PowerPolyKernel& kernel, const float* t, float* out, std::size_t count) {
+  map_arrays<Arch, 1>(simd::PreparedPowerPoly<Arch, kDecomposed, kLogDegree, kExpDegree>(kernel),
+                      {t}, out, count);
+}
+template <class Arch>
+void power_poly_array(const PowerPolyKernel& kernel, const float* t, float* out, std::size_t count) {
+  constexpr int kDegrees = PowerPolyKernel::kMaxLogDegree;
+  using Loop = void (*)(const PowerPolyKernel&, const float*, float*, std::size_t);
+  static constexpr auto kLoops = []<int... degree>(std::integer_sequence<int, degree...>) {
+    constexpr int kPrecise = PowerPolyKernel::kPreciseExpDegree, kFast = PowerPolyKernel::kFastExpDegree;
+    return std::array<Loop, 4 * kDegrees>{&power_poly_loop<Arch, false, kPrecise, degree + 1>...,
+                                          &power_poly_loop<Arch, false, kFast, degree + 1>...,
+                                          &power_poly_loop<Arch, true, kPrecise, degree + 1>...,
+                                          &power_poly_loop<Arch, true, kFast, degree + 1>...};
+  }(std::make_integer_sequence<int, kDegrees>());
+  const int form = 2 * int(kernel.decomposed) +
+                   int(kernel.exp_degree == PowerPolyKernel::kFastExpDegree);
+  kLoops[std::size_t(form * kDegrees + kernel.log_degree - 1)](kernel, t, out, count);
+}
+
 // The lobe over an array: the polynomial form with its degree as a template argument (unrolled,
 // coefficients in registers) and its finish fixed, the base_power form generic. The table holds
 // one per degree and finish, so that a call picks its loop by the slot its Lobe computed at
@@ -411,6 +434,7 @@ KernelTable make_kernel_table() {
     map_arrays<Arch, 1>([&](F v) { return simd::blinn_phong_u10(v, exponent, factor); }, {t},
                         out, count);
   };
+  table.power_poly = &power_poly_array<Arch>;
   table.shade_vectors = &shade_vectors_array<Arch>;
   table.shade_directions = &shade_directions_array<Arch>;
   table.shade_cosines = &shade_cosines_array<Arch>;
