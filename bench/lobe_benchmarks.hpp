@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <string_view>
 
 #include "inputs.hpp"
 #include "kutlog/lobe.hpp"
@@ -31,6 +32,28 @@ inline constexpr std::size_t kSpanCounts[] = {1, 16, 157, 4096};
 inline std::vector<float> lobe_inputs(const Lobe& lobe, std::size_t count = kArrayLength) {
   std::vector<float> angles = uniform_inputs(0, float(2 * lobe.cutoff_angle()), 1, count);
   for (float& t : angles) t = std::cos(std::min(t, 1.5707963f));
+  return angles;
+}
+
+// The fragment benchmarks' cosines (bench/main.cpp): lobe_inputs, or (order "/inside") t
+// uniform in angle inside the lobe, or (order "/raster") scanlines across a highlight: the
+// angle falls linearly to a random minimum and rises again by the lobe's width, 64 fragments a
+// line (about half of them past the cut, as in the other sets).
+inline std::vector<float> fragment_inputs(const Lobe& lobe, std::size_t count,
+                                          std::string_view order) {
+  const float gran = float(std::min(lobe.cutoff_angle(), 1.5707963));
+  if (order.empty()) return lobe_inputs(lobe, count);
+  std::vector<float> angles = uniform_inputs(0, gran, 3, count);
+  if (order == "/raster") {
+    constexpr std::size_t kLine = 64;
+    float closest = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+      if (i % kLine == 0) closest = angles[i];
+      const float across = std::fabs(float(i % kLine) - kLine / 2.0f) / (kLine / 2.0f);
+      angles[i] = std::min(1.5707963f, closest + gran * across);
+    }
+  }
+  for (float& angle : angles) angle = std::cos(angle);
   return angles;
 }
 

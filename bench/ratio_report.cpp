@@ -106,9 +106,11 @@ bool RatioCollector::print_lobe_ratios(std::FILE* out) const {
 bool RatioCollector::print_call_shape_ratios(std::FILE* out) const {
   // Per fragment: ns per call of each fragment function, and kutlog's speed-up over each peer.
   bool printed = false;
-  for (std::size_t count : {kArrayLength, kFragmentInputsUnlearned})
+  for (const auto& [count, order] : kFragmentDataSets)
     for (int k : {3, 5}) {
-      const std::string at = "/n:1000/k:" + std::to_string(k) + fragment_inputs_token(count);
+      const std::string at =
+          "/n:1000/k:" + std::to_string(k) + fragment_inputs_token(count) + order;
+      const std::string inputs = std::to_string(count) + (*order ? std::string(" ") + (order + 1) : "");
       const double kutlog = rate("fragment/scalar_kutlog" + at), fast = rate("fragment/scalar_kutlog_fast" + at);
       const double powf = rate("fragment/scalar_powf" + at), pow_double = rate("fragment/scalar_pow_double" + at);
       if (kutlog == 0 || powf == 0 || pow_double == 0) continue;
@@ -119,8 +121,8 @@ bool RatioCollector::print_call_shape_ratios(std::FILE* out) const {
       printed = true;
       for (auto [name, rate_of] : {std::pair{"scalar_kutlog", kutlog}, std::pair{"scalar_kutlog_fast", fast},
                                    std::pair{"scalar_powf", powf}, std::pair{"scalar_pow_double", pow_double}})
-        std::fprintf(out, "| %s | %zu | %d | %.2f | %.2fx | %.2fx |\n", name, count, k, 1e9 / rate_of,
-                     rate_of / powf, rate_of / pow_double);
+        std::fprintf(out, "| %s | %s | %d | %.2f | %.2fx | %.2fx |\n", name, inputs.c_str(), k,
+                     1e9 / rate_of, rate_of / powf, rate_of / pow_double);
     }
   // Spans: ns per element of the array eval (and of shade from cosines) at each span length,
   // and its cost over that of a 4096 span.
