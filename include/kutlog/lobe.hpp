@@ -23,8 +23,9 @@
 //   fast:    |out - scale F| <= 2^-16 scale everywhere.
 // Measured over every float t of the support (sampled below the cut: kutlog/accuracy.hpp) on
 // the grid n in {k+1, 10, 100, 1000, 10000}, k in 1..5, Q in {0.1, 0.5, 0.9}, and on random
-// lobes over n in [0.5, 10^6], k in 1..64, Q in [0.01, 0.99]; each kernel is accepted at setup only when its certified bound, or its run over
-// every float of the epicenter, meets the promise (a fit that misses is never kept).
+// lobes over n in [0.5, 10^6], k in 1..64, Q in [0.01, 0.99]; each kernel is accepted at setup
+// only when its certified bound, or its run over every float of the epicenter, meets the
+// promise (a fit that misses is never kept).
 //
 // Data rule (the reference's): t > 1 gives F(1) = 1 (coef when normalized), t at or below
 // cos(gran) and t <= 0 give 0, NaN gives NaN. Any count, any alignment, out may equal t.
@@ -333,8 +334,8 @@ struct PerLaneKernel {
 //   clamped to it; NaN n or t gives NaN. A range too wide for one fit in 1/n (tiny Q with n
 //   over many decades, e.g. Q = 1e-300 and n in [1, 10^38]) is refused the same way: split it.
 //   Contract: 0 <= out <= the lane's peak, its output at t = 1: exactly 1 unnormalized, within
-//   1.5 2^-22 of coef_exact(n) normalized (kPerLanePeakError); |out - scale F| <= 2^-20 scale (scale:
-//   1, or the lane's coef when normalized), measured on random (t, n) lanes of random
+//   1.5 2^-22 of coef_exact(n) normalized (kPerLanePeakError); |out - scale F| <= 2^-20 scale
+//   (scale: 1, or the lane's coef when normalized), measured on random (t, n) lanes of random
 //   materials over every k in 1..64, Q from 10^-6 to 1 - 5 10^-7 and n up to FLT_MAX
 //   (tests/test_lobe.cpp); the epicenter's ULP error is reported by kutlog/accuracy.hpp.
 class PerLaneLobe {
@@ -379,7 +380,7 @@ struct PowerPolyKernel {
   float n = 1;
   int log_degree = 1, exp_degree = 6;
   std::array<float, kMaxLogDegree + 1> log{};  // n log2(1 + x) / x
-  std::array<float, 7> exp{};                  // scale 2^f, exp[0] = the float scale
+  std::array<float, kPreciseExpDegree + 1> exp{};  // scale 2^f, exp[0] = the float scale
 };
 
 // scale * t^n as the fast pow a speed-minded renderer writes for one material: 2^(n log2 t)

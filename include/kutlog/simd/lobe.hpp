@@ -263,8 +263,8 @@ class PreparedPowerPoly {
     // shift by 23 drops the rest), added to E's exponent bits. No conversion to integer.
     const F shifter(0x1.8p23f), shifted = y + shifter;
     const F power = horner<kExpDegree>(y - (shifted - shifter), exp_);
-    const F value =
-        xsimd::bitwise_cast<F>(xsimd::bitwise_cast<I>(power) + (xsimd::bitwise_cast<I>(shifted) << 23));
+    const I exponent = xsimd::bitwise_cast<I>(shifted) << 23;
+    const F value = xsimd::bitwise_cast<F>(xsimd::bitwise_cast<I>(power) + exponent);
     if constexpr (kDecomposed)  // the exponent's bits lost NaN
       return xsimd::select(t <= t_zero_, F(0.0f), xsimd::select(xsimd::isnan(t), t, value));
     return xsimd::select(t <= t_zero_, F(0.0f), value);
