@@ -102,8 +102,8 @@ struct LobeKernel {
     return with_q(double(center_t) - t_capped, [&](double q) { return scale_d - w * q; });
   }
   // F(t) by the scalar path: 0 at or below t_cut, NaN for NaN, else unrounded(t) rounded to
-  // float and clamped to [0, scale_f]. (A branch-free cut measured 4 to 8 times slower here:
-  // the clamps then depend on the polynomial of every t, half of them past the cut.)
+  // float and clamped to [0, scale_f]. A branch, not a select: past the cut the polynomial's
+  // tiny or meaningless values would cost a select every call (subnormal roundings included).
   [[gnu::always_inline]] float evaluate(float t) const {
     if (!(t > t_cut)) return t == t ? 0.0f : t;
     // Past the cut t is a number and so is the value: min and max clamp in one instruction each.
@@ -114,7 +114,7 @@ struct LobeKernel {
   // finish(q(x)), by Estrin's scheme: q's lower half plus x^(2^j) times its upper half, down
   // to single coefficients, so that a call's chain of dependent operations is log2 of the
   // degree deep, not the degree (a fragment loop's calls overlap in the CPU only as far as
-  // its reorder buffer reaches; Horner's rule took 1.2x the time at n = 1000). Unrolled for
+  // its reorder buffer reaches). Unrolled for
   // the degrees the setup fits (at most 16 for the polynomial form, fewer for the base).
   // src/lobe_bound.cpp bounds the roundings of this tree.
   template <class Finish>
@@ -226,8 +226,7 @@ class Lobe {
 
   // F(t), or coef_exact * F(t): one fragment, inline, no dispatch, no allocation. The same
   // contract as the arrays', whatever the flags this is compiled with. Always inlined: GCC
-  // (-O2 and -O3) called it out of line for its size, and the call, with the kernel's index
-  // computed per call, cost a fragment loop a sixth to a third of its time.
+  // would call it out of line for its size, the kernel's index then computed per call.
   [[gnu::always_inline]] float eval(float t, Variant variant = Variant::precise,
                                     Normalization normalization = Normalization::none) const {
     return kernel(variant, normalization, Arithmetic::scalar).evaluate(t);
@@ -240,9 +239,8 @@ class Lobe {
   float eval(T, Variant = Variant::precise, Normalization = Normalization::none) const = delete;
 
   // out[i] = F(t[i]), or coef_exact * F(t[i]). Inline up to one indirect call of the active
-  // arch's loop for this kernel (out of line, the dispatch was a call and 17 instructions
-  // before the jump to the loop; a call site's constant variant and normalization now fold
-  // the kernel's index).
+  // arch's loop for this kernel, so that a call site's constant variant and normalization
+  // fold the kernel's index.
   void eval(const float* t, float* out, std::size_t count, Variant variant = Variant::precise,
             Normalization normalization = Normalization::none) const {
     const detail::LobeArrayKernels* loops =

@@ -155,7 +155,7 @@ class LobeSampler {
   // code in double precision, each output rounded once to float, dispatched to the arch's
   // build for its fused multiply-add (out of line: the caller's flags do not reach it): the
   // contract and the data rule above, asserted per arch by the same tests. For many samples
-  // at once the array call is faster (see the README's sampling section).
+  // at once the array call is faster (docs: the sampling benchmarks).
   SampledDirection sample(float u1, float u2) const;
   // Floats only, as the arrays' inputs are: a double u1 just below 1 would round to 1 without
   // a word. Convert explicitly, sample(float(u1), float(u2)).

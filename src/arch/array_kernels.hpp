@@ -22,9 +22,8 @@ using floats_of = xsimd::batch<float, Arch>;
 // `padding` in the others, and their store. No load or store leaves the arrays. AVX-512 moves them
 // with a lane mask; AVX2 loads with one (masked lanes never touch memory) but stores in halves, 4,
 // 2 and 1 floats by the bits of count, as SSE4.1 both loads and stores: AMD's AVX2 lane-masked
-// store took about 4 ns here, and SSE4.1's way through a local buffer (its scalar writes read back
-// as one vector, which no store forwards) cost a one-element call 25 to 30 ns, against 7 to 16 ns
-// now. Other archs (NEON) go through the buffer. Overloads on the arch's tag, the most derived
+// store is microcoded, and a local buffer's scalar writes, read back as one vector, wait for
+// store forwarding that never comes. Other archs (NEON) go through the buffer. Overloads on the arch's tag, the most derived
 // chosen, so that only their code has a buffer (an aligned buffer anywhere in a function costs
 // every call a stack realignment).
 template <class Arch>
@@ -109,8 +108,7 @@ inline void store_partial(xsimd::avx512f, float* out, xsimd::batch<float, Arch> 
 // Applies `kernel` to batches of `count` floats from each input array; the tail as a partial
 // batch padded with `padding` (a value inside every kernel's domain). Inlined into its caller,
 // so that what the kernel captures by reference is seen not to alias the output: out of line
-// (GCC 12's choice for some), pow_xsimd's loop recomputed its exponent's constants per batch,
-// 15 % slower.
+// (GCC 12's choice for some), a loop recomputed its kernel's constants per batch.
 template <class Arch, std::size_t Inputs, class Kernel>
 [[gnu::always_inline]] inline void map_arrays(const Kernel& kernel,
                                               const float* const (&inputs)[Inputs], float* out,
@@ -169,12 +167,8 @@ template <class Arch, int kDegree, simd::LobeFinish kFinish, bool kClamped>
 }
 // A span of at most one batch (a renderer's span of 16 on AVX-512) runs straight through, no
 // loop; longer spans jump to the loop. A whole batch is loaded and stored whole, never through
-// the lane mask: Zen 4 forwards no masked store to a later load, nor a store to a masked load
-// (18 to 20 cycles each, measured), and a caller who reads back the span it just shaded, as
-// shade() does, would wait for it (shade's spans of 16 took 1.2x the time with masked whole
-// batches). Alternated against the loop alone (AVX-512, n = 1000, k = 3 and 5, fastest of
-// three rounds): count 16 0.92x to 0.98x the time, count 1 0.96x to 1.0x, 157 and 4096
-// unchanged.
+// the lane mask: Zen 4 forwards no masked store to a later load, nor a store to a masked load,
+// and a caller who reads back the span it just shaded, as shade() does, would wait for it.
 template <class Arch, int kDegree, simd::LobeFinish kFinish = simd::LobeFinish::any,
           bool kClamped = true>
 void kutlog_lobe_array(const LobeKernel& kernel, const float* t, float* out, std::size_t count) {
@@ -217,8 +211,8 @@ inline void map_masked(const Kernel& kernel, const float* const (&inputs)[Inputs
   using F = xsimd::batch<float, Arch>;
   constexpr std::size_t N = F::size;
   // A batch no lane of which is selected is skipped, one whose every lane is stored whole: a
-  // rasterizer's coverage is mostly such batches, and AVX2's lane-masked store took about 4 ns
-  // per batch on an AMD EPYC (57 % of a 16x16 tile's shading under a random mask).
+  // rasterizer's coverage is mostly such batches, and AVX2's lane-masked store is microcoded
+  // on AMD.
   const auto run = [&](const float* const (&sources)[Inputs], std::size_t at, float* target,
                        const std::uint8_t* lanes) {
     const auto value = [&] {
@@ -250,8 +244,7 @@ inline void map_masked(const Kernel& kernel, const float* const (&inputs)[Inputs
 // unless the caller gave them; F(t) by the array loop of the kernel's slot, the one
 // Lobe::eval runs (degree unrolled, finish fixed, clamp dropped where proven needless); then
 // F, times max(N.L, 0) if asked, stored where mask selects. The buffers stay in L1. (One loop
-// per form and slot instead would compile each form 86 times per arch: measured 13x the code
-// and 6x the compile time of this file.)
+// per form and slot instead would compile each form 86 times per arch.)
 constexpr std::size_t kShadeChunk = 256;
 
 // Where a chunk's t and N.L are (N.L only read when options.times_n_dot_l): the given arrays

@@ -50,8 +50,8 @@ constexpr LobeFinish lobe_finish(const LobeKernel& kernel) {
 
 // A LobeKernel with its constants broadcast once, for loops over many batches.
 // kDegree >= 0 fixes the float form's degree (kernel.degree must equal it): Horner's rule is
-// then unrolled with the coefficients in registers, about twice as fast as the generic loop
-// at degree 8. kFinish other than `any` fixes the finish (it must equal
+// then unrolled with the coefficients in registers, not reloaded per step as in the generic
+// loop. kFinish other than `any` fixes the finish (it must equal
 // lobe_finish<Arch>(kernel)): a span of one batch then tests no flag. kClamped = false
 // leaves out the clamp to [0, scale_f], for a kernel whose setup proved it needless
 // (kernel.clamped false, polynomial form). The array functions switch once per call to the
@@ -76,8 +76,7 @@ class PreparedLobe {
   // setup proved it does not, kClamped = false runs without).
   // A fixed degree is the polynomial form's (the base_power form runs with kDegree = -1).
   // The float form always inlined: with two calls in one function (a span's whole batch and its
-  // partial one) GCC called it out of line at degree 8, its batches through memory: 2.2x the
-  // time of a span of 16.
+  // partial one) GCC would call it out of line, its batches passed through memory.
   [[gnu::always_inline]] F operator()(F t) const {
     if constexpr (!kClamped) return float_form(t);
     if (kDegree >= 0 || kernel_.form == LobeKernel::Form::polynomial)
