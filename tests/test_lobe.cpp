@@ -210,7 +210,8 @@ TEST_P(LobePerArch, ShortSpansEqualTheLongArrayForEveryKernel) {
 
   constexpr std::size_t kLongest = 40;  // past two batches of every arch
   std::vector<float> t(kLongest), whole(4 * kLongest), span(kLongest);
-  for (const auto& [slot, kernel] : kernel_of_slot) {
+  for (const auto& [slot_of_kernel, kernel] : kernel_of_slot) {
+    const int slot = slot_of_kernel;  // a lambda below names it (clang 14 captures no binding)
     const detail::LobeArrayKernel loop = loops.by_slot[slot];
     // Over the support and off it, t = 1 and above, and NaN.
     const double cut = kernel.t_cut <= 0 ? -0.1 : double(kernel.t_cut);
