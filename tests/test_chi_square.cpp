@@ -6,6 +6,8 @@
 //   UpperIncompleteGamma.ClosedForms passed (it calls the gamma directly).
 // - upper_incomplete_gamma's series branch returning P instead of Q = 1 - P:
 //   UpperIncompleteGamma.ClosedForms failed (the tabulated quantiles take the other branch).
+// - chi_square_p_value returning 1 - p also failed ChiSquare.SkewedSamplerFails (the
+//   negative control: a sampler with a skewed pdf must fail).
 // - pooled_pearson skipping the pooled cell: PooledPearson.SmallCellsMerged failed.
 #include <cmath>
 
@@ -50,6 +52,30 @@ TEST(PooledPearson, SmallCellsMerged) {
       pooled_pearson({{40, 35}, {2, 0}, {10, 12}, {1, 4}, {3, 5}});
   EXPECT_EQ(pearson.dof, 2);
   EXPECT_NEAR(pearson.statistic, 1.5 + 0.4 + 0.625, 1e-12);
+}
+
+// Cosine-weighted directions, sin(theta) = u1^exponent: exponent 1/2 draws the pdf cos/pi.
+std::vector<Vec3> cosine_samples(double exponent, int count) {
+  UniformNumbers uniform(30);
+  std::vector<Vec3> samples;
+  for (int i = 0; i < count; ++i) {
+    const double sin_theta = std::pow(uniform(), exponent), phi = 2 * pi * uniform();
+    samples.push_back({sin_theta * std::cos(phi), sin_theta * std::sin(phi),
+                       std::sqrt(1 - sin_theta * sin_theta)});
+  }
+  return samples;
+}
+
+TEST(ChiSquare, SkewedSamplerFails) {
+  // The right sampler passes at 1 % (Sidak over these two cases); one whose sin(theta) is
+  // skewed by 5 % in its exponent must fail.
+  constexpr int kCount = 100000;
+  const DirectionBins bins({0, 0, 1}, pi / 2, 8, 8);
+  const auto pdf = [](const Vec3& w) { return w.z > 0 ? w.z / pi : 0.0; };
+  const double threshold = sidak_threshold(0.01, 2);
+  EXPECT_GT(chi_square(bins, cosine_samples(0.5, kCount), pdf, kCount).p_value, threshold);
+  EXPECT_LT(chi_square(bins, cosine_samples(0.5 * 1.05, kCount), pdf, kCount).p_value,
+            threshold);
 }
 
 }  // namespace
