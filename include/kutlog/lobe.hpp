@@ -206,6 +206,14 @@ struct LobeArrayKernels {
 extern std::atomic<const LobeArrayKernels*> active_lobe_loops;
 }  // namespace detail
 
+// The error bound the setup certified for one kernel of a Lobe, in the contract's units
+// (src/lobe_bound.hpp): at most the variant's promise, and for a fused kernel accepted by its
+// run over the epicenter, up to twice the promised ulps there (the run's measure is within the
+// promise). Where the support holds no float below 1 (no fit), the promise.
+struct KernelCertificate {
+  double abs_error = 0, epicenter_ulp = 0;
+};
+
 class Lobe {
  public:
   // Throws std::invalid_argument naming the parameter and its range: n finite > 0, k integer
@@ -264,6 +272,11 @@ class Lobe {
     if (normalization == Normalization::exact_coef && !coef_fits_float_) throw_coef_overflow();
     return kernels_[kernel_index(variant, normalization, arithmetic)];
   }
+  // What the setup certified for that kernel (tests check it against measurement).
+  const KernelCertificate& certificate(Variant variant, Normalization normalization,
+                                       Arithmetic arithmetic) const {
+    return certificates_[kernel_index(variant, normalization, arithmetic)];
+  }
 
  private:
   [[noreturn]] void throw_coef_overflow() const;
@@ -282,6 +295,7 @@ class Lobe {
     return (int(variant) * 2 + int(normalization)) * 3 + int(arithmetic);
   }
   LobeKernel kernels_[2 * 2 * 3];
+  KernelCertificate certificates_[2 * 2 * 3];
   // The slot of each SIMD kernel's array loop in the per-arch tables
   // (detail::LobeArrayKernels), computed at setup: a call reads it instead of testing the
   // kernel's form, degree and finish.
