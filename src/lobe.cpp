@@ -181,7 +181,7 @@ std::optional<CertifiedKernel> fit_polynomial(LobeKernel kernel, QuotientSeries&
       // The scale whole, else split (scale_f + (scale_lo - w q): one more rounding, of a term
       // smaller than the output, against scale_f's whole rounding error in a lower binade).
       // FMA kernels of either may be run over the epicenter: the whole scale saves an add
-      // per batch (n = 1000, k = 3, normalized: 15 % on AVX2), worth a second run.
+      // per batch, worth a second run.
       const bool split = arithmetic != Arithmetic::scalar && (compensated || scale_lo != 0);
       QuotientSeries* series_to_run =
           !compensated && arithmetic == Arithmetic::fused ? &series : nullptr;
@@ -247,9 +247,8 @@ CertifiedKernel fit_kernel(const ref::KutlogLobe& reference, const detail::LobeS
   const std::optional<CertifiedKernel> polynomial =
       fit_polynomial(kernel, polynomial_series, shape, w_max, scale, profile, target, arithmetic);
   // Beyond the same steps of q and 1 - w q, the base costs the power, the scale and a switch
-  // on k. Measured in the scalar path (Estrin's scheme, n = 1000): k = 3 runs faster as a
-  // polynomial of degree 6 than as a base of degree 3, and k = 5 as one of degree 8 (0.89x
-  // the time; with Horner's rule it had been slower).
+  // on k: in the scalar path (Estrin's scheme) a polynomial of up to that many degrees more
+  // runs faster than the base (k = 5, n = 1000: degree 8 against a base of degree 3).
   const int base_overhead = power_cost(kernel.k) + 2;
   if (polynomial &&
       (arithmetic != Arithmetic::scalar || polynomial->kernel.degree < 1 + base_overhead))

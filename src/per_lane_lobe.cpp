@@ -56,7 +56,7 @@ std::optional<FloatFit> fit_float(const std::function<Real(Real)>& g, double lo,
     return fit;
   }
   // The fits are checked against the series, not g: it costs 2 N + 1 calls of g (N = 8 or 16
-  // mostly) where g on the grid costs 1025 (ref::coef_exact takes 2 us at k = 64). The
+  // mostly) where g on the grid costs 1025 (ref::coef_exact sums k + 1 terms). The
   // series' error e is allowed for twice over (it is measured where it peaks, and the sum in
   // double on the grid adds its own rounding): a fit within `allowed` of the series is within
   // allowed (1 + 2 e) + 2 e = target of g.
