@@ -23,9 +23,9 @@ using floats_of = xsimd::batch<float, Arch>;
 // with a lane mask; AVX2 loads with one (masked lanes never touch memory) but stores in halves, 4,
 // 2 and 1 floats by the bits of count, as SSE4.1 both loads and stores: AMD's AVX2 lane-masked
 // store is microcoded, and a local buffer's scalar writes, read back as one vector, wait for
-// store forwarding that never comes. Other archs (NEON) go through the buffer. Overloads on the arch's tag, the most derived
-// chosen, so that only their code has a buffer (an aligned buffer anywhere in a function costs
-// every call a stack realignment).
+// store forwarding that never comes. Other archs (NEON) go through the buffer. Overloads on
+// the arch's tag, the most derived chosen, so that only their code has a buffer (an aligned
+// buffer anywhere in a function costs every call a stack realignment).
 template <class Arch>
 inline xsimd::batch<float, Arch> load_partial(xsimd::generic, const float* in, std::size_t count,
                                               float padding) {
