@@ -17,6 +17,15 @@ inline constexpr std::size_t kFragmentInputsUnlearned = std::size_t(1) << 18;
 inline std::string fragment_inputs_token(std::size_t count) {
   return count == kArrayLength ? "" : "/inputs:" + std::to_string(count);
 }
+// The fragment benchmarks' data sets: how many cosines, and in which order ("": the lobe and
+// past it; "/inside": inside the lobe only; "/raster": along scanlines; bench/main.cpp).
+struct FragmentDataSet {
+  std::size_t count;
+  const char* order;
+};
+inline constexpr FragmentDataSet kFragmentDataSets[] = {
+    {kArrayLength, ""}, {kFragmentInputsUnlearned, ""}, {kArrayLength, "/inside"},
+    {kArrayLength, "/raster"}};
 
 // kArrayLength (or count) values uniform in [lo, hi], the same for every benchmark that asks
 // for them.

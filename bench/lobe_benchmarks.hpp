@@ -1,6 +1,7 @@
 // Benchmarks of the shading lobes, named with the tokens the ratio report reads:
 // lobe/<kernel>/n:<n>/k:<k>/arch:<arch>, kernel in kutlog_precise, kutlog_fast,
-// kutlog_perlane, pow_xsimd, pow_precise, schlick, copy; and the spans of a renderer,
+// kutlog_perlane, pow_xsimd, pow_poly_precise, pow_poly_fast, pow_precise, schlick, copy; and
+// the spans of a renderer,
 // span/<kernel>/n:1000/k:<k>/count:<count>/arch:<arch> (kernel in kutlog_precise, kutlog_fast
 // and shade_cosines, the stream API's), and the stream API on 16x16 tiles,
 // shade/<form>/n:1000/k:<k>/count:256/arch:<arch>, form in cosines, directions.
@@ -11,9 +12,11 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <string_view>
 
 #include "inputs.hpp"
 #include "kutlog/lobe.hpp"
+#include "kutlog/reference.hpp"
 #include "kutlog/dispatch.hpp"
 #include "kutlog/shade.hpp"
 
@@ -29,6 +32,28 @@ inline constexpr std::size_t kSpanCounts[] = {1, 16, 157, 4096};
 inline std::vector<float> lobe_inputs(const Lobe& lobe, std::size_t count = kArrayLength) {
   std::vector<float> angles = uniform_inputs(0, float(2 * lobe.cutoff_angle()), 1, count);
   for (float& t : angles) t = std::cos(std::min(t, 1.5707963f));
+  return angles;
+}
+
+// The fragment benchmarks' cosines (bench/main.cpp): lobe_inputs, or (order "/inside") t
+// uniform in angle inside the lobe, or (order "/raster") scanlines across a highlight: the
+// angle falls linearly to a random minimum and rises again by the lobe's width, 64 fragments a
+// line (about half of them past the cut, as in the other sets).
+inline std::vector<float> fragment_inputs(const Lobe& lobe, std::size_t count,
+                                          std::string_view order) {
+  const float gran = float(std::min(lobe.cutoff_angle(), 1.5707963));
+  if (order.empty()) return lobe_inputs(lobe, count);
+  std::vector<float> angles = uniform_inputs(0, gran, 3, count);
+  if (order == "/raster") {
+    constexpr std::size_t kLine = 64;
+    float closest = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+      if (i % kLine == 0) closest = angles[i];
+      const float across = std::fabs(float(i % kLine) - kLine / 2.0f) / (kLine / 2.0f);
+      angles[i] = std::min(1.5707963f, closest + gran * across);
+    }
+  }
+  for (float& angle : angles) angle = std::cos(angle);
   return angles;
 }
 
@@ -86,6 +111,16 @@ inline void register_lobe_benchmarks(Arch arch) {
         blinn_phong_xsimd(x, out, N, exponent);
       });
     });
+    // The fast pow a speed-minded user writes for one material (kutlog::PowerPoly), at each
+    // lobe variant's accuracy, the normalization folded in as kutlog's.
+    for (Variant variant : {Variant::precise, Variant::fast})
+      add(variant == Variant::precise ? "pow_poly_precise" : "pow_poly_fast", "",
+          [=](benchmark::State& state) {
+            const PowerPoly power(n, variant, ref::blinn_phong_exact_coef(n));
+            run_array(state, arch, t, t, [&](const float* x, const float*, float* out) {
+              power.eval(x, out, N);
+            });
+          });
     add("pow_precise", "", [=](benchmark::State& state) {
       run_array(state, arch, t, t, [&](const float* x, const float*, float* out) {
         blinn_phong_u10(x, out, N, exponent);

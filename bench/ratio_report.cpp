@@ -96,9 +96,11 @@ double RatioCollector::rate(const std::string& name) const {
 }
 
 std::optional<tools::Table> RatioCollector::lobe_ratios() const {
-  // Throughput of each lobe kernel over that of pow_xsimd at the same n and arch.
-  tools::Table table({"arch", "n", "k", "pow_xsimd (M/s)", "kutlog_precise", "kutlog_fast",
-                      "kutlog_perlane", "pow_precise", "schlick"});
+  // Throughput of each lobe kernel over that of pow_xsimd at the same n and arch, and of each
+  // variant over the polynomial pow of the same accuracy (kutlog::PowerPoly), the strongest peer.
+  tools::Table table({"arch", "n", "k", "pow_xsimd (M/s)", "precise / pow_poly_precise",
+                      "fast / pow_poly_fast", "kutlog_precise", "kutlog_fast", "kutlog_perlane",
+                      "pow_precise", "schlick"});
   bool any = false;
   for (const std::string& arch : compiled_arch_names())
     for (int n : {10, 100, 1000}) {
@@ -107,11 +109,16 @@ std::optional<tools::Table> RatioCollector::lobe_ratios() const {
       const double pow_xsimd = rate("lobe/pow_xsimd" + at_n + tail);
       if (pow_xsimd == 0) continue;
       any = true;
+      const double poly_precise = rate("lobe/pow_poly_precise" + at_n + tail),
+                   poly_fast = rate("lobe/pow_poly_fast" + at_n + tail);
       for (int k : {1, 3, 5}) {
         const std::string at_k = at_n + "/k:" + std::to_string(k);
+        const double precise = rate("lobe/kutlog_precise" + at_k + tail),
+                     fast = rate("lobe/kutlog_fast" + at_k + tail);
         table.add_row({arch, std::to_string(n), std::to_string(k), millions(pow_xsimd),
-                       times(rate("lobe/kutlog_precise" + at_k + tail) / pow_xsimd),
-                       times(rate("lobe/kutlog_fast" + at_k + tail) / pow_xsimd),
+                       poly_precise ? times(precise / poly_precise) : "",
+                       poly_fast ? times(fast / poly_fast) : "", times(precise / pow_xsimd),
+                       times(fast / pow_xsimd),
                        times(rate("lobe/kutlog_perlane" + at_k + tail) / pow_xsimd),
                        times(rate("lobe/pow_precise" + at_n + tail) / pow_xsimd),
                        times(rate("lobe/schlick" + at_n + tail) / pow_xsimd)});
@@ -125,18 +132,19 @@ std::optional<tools::Table> RatioCollector::fragment_ratios() const {
   tools::Table table({"per fragment, n = 1000", "inputs", "k", "ns/call", "powf / it",
                       "pow(double) / it"});
   bool any = false;
-  for (std::size_t count : {kArrayLength, kFragmentInputsUnlearned})
+  for (const auto& [count, order] : kFragmentDataSets)
     for (int k : {3, 5}) {
-      const std::string at = "/n:1000/k:" + std::to_string(k) + fragment_inputs_token(count);
+      const std::string at =
+          "/n:1000/k:" + std::to_string(k) + fragment_inputs_token(count) + order;
+      const std::string inputs = std::to_string(count) + (*order ? std::string(" ") + (order + 1) : "");
       const double kutlog = rate("fragment/scalar_kutlog" + at), fast = rate("fragment/scalar_kutlog_fast" + at);
       const double powf = rate("fragment/scalar_powf" + at), pow_double = rate("fragment/scalar_pow_double" + at);
       if (kutlog == 0 || powf == 0 || pow_double == 0) continue;
       any = true;
       for (auto [name, rate_of] : {std::pair{"scalar_kutlog", kutlog}, std::pair{"scalar_kutlog_fast", fast},
                                    std::pair{"scalar_powf", powf}, std::pair{"scalar_pow_double", pow_double}})
-        table.add_row({name, std::to_string(count), std::to_string(k),
-                       fmt::format("{:.2f}", 1e9 / rate_of), times(rate_of / powf),
-                       times(rate_of / pow_double)});
+        table.add_row({name, inputs, std::to_string(k), fmt::format("{:.2f}", 1e9 / rate_of),
+                       times(rate_of / powf), times(rate_of / pow_double)});
     }
   return any ? std::optional(std::move(table)) : std::nullopt;
 }

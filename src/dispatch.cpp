@@ -221,6 +221,9 @@ void PerLaneLobe::eval(const float* t, const float* n, float* out, std::size_t c
   active_table().kutlog_per_lane(kernel_, normalization == Normalization::exact_coef, t, n, out,
                                  count);
 }
+void PowerPoly::eval(const float* t, float* out, std::size_t count) const {
+  active_table().power_poly(kernel_, t, out, count);
+}
 void blinn_phong_xsimd(const float* t, float* out, std::size_t count, float n, float scale) {
   ref::validate_exponent(n);
   active_table().blinn_phong_xsimd(t, n, scale, out, count);

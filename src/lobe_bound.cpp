@@ -15,8 +15,8 @@ constexpr double kUnderflow = 0x1p-150;
 // The monomials are exact to long double's precision, not better: each counts as off by this.
 constexpr double kMonomialRelativeError = 0x1p-60;
 // Pieces of the support. More tighten the bound where the lobe's value changes within one
-// (the epicenter's ulp is taken at a piece's lowest value). 32 cost under 1 us per
-// kernel; 48 and 192 chose the same kernels on the grid, 48 at a sixth more setup time.
+// (the epicenter's ulp is taken at a piece's lowest value); more than 32 chose the same
+// kernels on the grid, at more setup time.
 constexpr int kPieces = 32;
 // Where the ulp bound applies: F >= 0.6 (kutlog/lobe.hpp).
 constexpr double kEpicenter = 0.6;

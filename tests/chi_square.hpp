@@ -179,22 +179,14 @@ struct ChiSquareResult {
   int outside;  // samples past the binned range (whose probability is 0)
 };
 
-// Pearson's test as pbrt-v4 runs it, of `draw_count` draws of which `samples` are those the
-// sampler produced (a failed draw is missing from the observed counts as its probability is
-// from the expected): cells expected below 5 are pooled into one cell (with the next smallest
+// Pearson's statistic and its degrees of freedom over cells of (expected, observed) counts
+// whose total is fixed: cells expected below 5 are pooled into one cell (with the next smallest
 // cells while the pool is still below 5).
-inline ChiSquareResult chi_square(const DirectionBins& bins, const std::vector<Vec3>& samples,
-                                  const std::function<double(const Vec3&)>& pdf, int draw_count) {
-  std::vector<double> observed(bins.cell_count(), 0);
-  int outside = 0;
-  for (const Vec3& w : samples) {
-    const int cell = bins.cell_of(w);
-    if (cell < 0) ++outside; else ++observed[cell];
-  }
-  const std::vector<double> probabilities = bins.cell_probabilities(pdf, 1e-3 / draw_count);
-  std::vector<std::pair<double, double>> cells;  // expected, observed; by expected
-  for (int c = 0; c < bins.cell_count(); ++c)
-    cells.emplace_back(probabilities[c] * draw_count, observed[c]);
+struct PearsonStatistic {
+  double statistic;
+  int dof;
+};
+inline PearsonStatistic pooled_pearson(std::vector<std::pair<double, double>> cells) {
   std::sort(cells.begin(), cells.end());
   double statistic = 0, pooled_expected = 0, pooled_observed = 0;
   int dof = -1;  // the total is fixed
@@ -211,7 +203,27 @@ inline ChiSquareResult chi_square(const DirectionBins& bins, const std::vector<V
                  pooled_expected;
     ++dof;
   }
-  return {statistic, dof, chi_square_p_value(statistic, dof), outside};
+  return {statistic, dof};
+}
+
+// Pearson's test as pbrt-v4 runs it, of `draw_count` draws of which `samples` are those the
+// sampler produced (a failed draw is missing from the observed counts as its probability is
+// from the expected).
+inline ChiSquareResult chi_square(const DirectionBins& bins, const std::vector<Vec3>& samples,
+                                  const std::function<double(const Vec3&)>& pdf, int draw_count) {
+  std::vector<double> observed(bins.cell_count(), 0);
+  int outside = 0;
+  for (const Vec3& w : samples) {
+    const int cell = bins.cell_of(w);
+    if (cell < 0) ++outside; else ++observed[cell];
+  }
+  const std::vector<double> probabilities = bins.cell_probabilities(pdf, 1e-3 / draw_count);
+  std::vector<std::pair<double, double>> cells;  // expected, observed
+  for (int c = 0; c < bins.cell_count(); ++c)
+    cells.emplace_back(probabilities[c] * draw_count, observed[c]);
+  const PearsonStatistic pearson = pooled_pearson(std::move(cells));
+  return {pearson.statistic, pearson.dof, chi_square_p_value(pearson.statistic, pearson.dof),
+          outside};
 }
 
 // Sidak: the significance of each of `cases` tests so that all pass with probability

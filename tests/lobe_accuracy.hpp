@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <random>
 #include <string>
 #include <vector>
@@ -38,7 +39,10 @@ inline std::vector<LobeCase> accuracy_grid() {
 struct LargestErrors {
   std::array<double, 3> abs_error{}, epicenter_ulp{};
   double per_lane_peak_error = 0;
+  double certificate_share = 0;  // the largest abs error measured over the certified one
   void expect_bounds_reached() const {
+    if (certificate_share > 0)
+      std::printf("largest error over its kernel's certified bound: %.3f\n", certificate_share);
     for (std::size_t i = 0; i < abs_error.size(); ++i) {
       if (abs_error[i] == 0) continue;  // not measured by this test
       const LobeBound& bound = kLobeBounds[i];
@@ -52,11 +56,23 @@ struct LargestErrors {
   }
 };
 
+// The arithmetic whose kernels `evaluate` runs: the active arch's for the array functions, else
+// the scalar path's.
+inline Arithmetic arithmetic_of(tools::LobeEvaluator evaluate) {
+  if (evaluate != tools::evaluate_array) return Arithmetic::scalar;
+  return detail::active_lobe_loops.load()->fused_fma ? Arithmetic::fused : Arithmetic::unfused;
+}
+
 // Asserts kutlog/accuracy.hpp's bounds of the value returned and the hard contracts
 // 0 <= out <= peak (1, or the float coef: the output at t = 1) and out = 0 exactly where F = 0
-// (at and below the cut-off) for the four kernels of a lobe; adds its errors to `largest`.
+// (at and below the cut-off) for the four kernels of a lobe, run by `evaluate`; and that
+// each kernel's errors are within what its setup certified (Lobe::certificate: the setup
+// keeps kernels by that bound alone, so an unsound one would pass a fit that misses). Adds its
+// errors to `largest`.
 inline void expect_within_bounds(const Lobe& lobe, const std::array<tools::LobeErrors, 4>& errors,
-                                 LargestErrors* largest = nullptr) {
+                                 LargestErrors* largest = nullptr,
+                                 tools::LobeEvaluator evaluate = tools::evaluate_array) {
+  const Arithmetic arithmetic = arithmetic_of(evaluate);
   const char* names[] = {"precise", "precise*coef", "fast", "fast*coef"};
   for (int i = 0; i < 4; ++i) {
     const LobeBound& bound = kLobeBounds[i < 2 ? 0 : 1];
@@ -67,7 +83,18 @@ inline void expect_within_bounds(const Lobe& lobe, const std::array<tools::LobeE
     const float peak = normalized ? float(lobe.coef_exact()) : 1.0f;
     EXPECT_LE(errors[i].max_abs_error, bound.max_abs_error())
         << "worst t = " << errors[i].worst_abs_input;
+    // Certified (the double reference's own error, about 1e-16, allowed for).
+    const KernelCertificate& certified =
+        lobe.certificate(tools::kLobeVariants[i / 2], tools::kLobeNormalizations[i % 2], arithmetic);
+    EXPECT_LE(errors[i].max_abs_error, certified.abs_error * (1 + 1e-9))
+        << "uncertified error, arithmetic " << int(arithmetic) << ", worst t = "
+        << errors[i].worst_abs_input;
+    EXPECT_LE(errors[i].max_epicenter_ulp, certified.epicenter_ulp * (1 + 1e-9) + 1e-9)
+        << "uncertified ulps, arithmetic " << int(arithmetic) << ", worst t = "
+        << errors[i].worst_ulp_input;
     if (largest) {
+      const double share = errors[i].max_abs_error / certified.abs_error;
+      largest->certificate_share = std::max(largest->certificate_share, share);
       const std::size_t which = i < 2 ? 0 : 1;
       largest->abs_error[which] = std::max(largest->abs_error[which], errors[i].max_abs_error);
       largest->epicenter_ulp[which] =
@@ -91,7 +118,8 @@ inline void expect_grid_within_bounds(std::uint32_t stride,
   LargestErrors largest;
   for (const LobeCase& c : accuracy_grid()) {
     const Lobe lobe(c.n, c.k, c.Q);
-    expect_within_bounds(lobe, tools::measure_lobe(lobe, {stride, stride}, evaluate), &largest);
+    expect_within_bounds(lobe, tools::measure_lobe(lobe, {stride, stride}, evaluate), &largest,
+                         evaluate);
   }
   largest.expect_bounds_reached();
 }
@@ -139,7 +167,7 @@ inline void expect_grid_within_bounds_everywhere(
   for (const LobeCase& c : accuracy_grid()) {
     const Lobe lobe(c.n, c.k, c.Q);
     expect_within_bounds(lobe, tools::measure_lobe(lobe, dense_sweep(lobe, per_lobe, per_lobe), evaluate),
-                         &largest);
+                         &largest, evaluate);
   }
   largest.expect_bounds_reached();
 }
@@ -153,7 +181,7 @@ inline void expect_random_lobes_within_bounds(int count, unsigned seed, double s
   for (const LobeCase& c : random_lobes(count, seed)) {
     const Lobe lobe(c.n, c.k, c.Q);
     expect_within_bounds(lobe, tools::measure_lobe(lobe, dense_sweep(lobe, support_samples, epicenter_samples),
-                                                   evaluate), &largest);
+                                                   evaluate), &largest, evaluate);
   }
   largest.expect_bounds_reached();
 }

@@ -124,6 +124,10 @@ void for_every_kernel(const Call& call) {
   call("schlick", [](const float* in, float* out, std::size_t count) {
     schlick(in, out, count, 100);
   });
+  call("PowerPoly::eval", [](const float* in, float* out, std::size_t count) {
+    static const PowerPoly power(100, Variant::precise);
+    power.eval(in, out, count);
+  });
   call("shade (t, n_dot_l)", [](const float* in, float* out, std::size_t count) {
     shade(empty_test_lobe(), in, in, out, count);
   });

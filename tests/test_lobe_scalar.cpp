@@ -34,11 +34,11 @@ TEST(LobeScalar, RandomLobesWithinBoundsAndBetweenZeroAndPeak) {
 }
 
 TEST(LobeScalar, PerLaneMaterialsWithinBoundsAndBetweenZeroAndPeak) {
+  // Not asserted to reach the bound: in double, the scalar path has only the fits' error,
+  // about half the arrays' (whose float roundings the measured bound is; test_lobe.cpp).
   unsigned seed = 17;
-  LargestErrors largest;
   for (const PerLaneCase& c : per_lane_materials(40, 2026))
-    expect_per_lane_within_bounds(c, seed++, 8192, evaluate_per_lane_scalar_here, &largest);
-  largest.expect_bounds_reached();
+    expect_per_lane_within_bounds(c, seed++, 8192, evaluate_per_lane_scalar_here);
 }
 
 // The data rule, the same as the arrays': the peak at t >= 1, 0 at and below the cut and for

@@ -2,6 +2,7 @@
 // domains, per arch, against glibc's double functions (exact to 2^-29 float ulp).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,8 @@
 #include "common/ulp.hpp"
 #include "kutlog/accuracy.hpp"
 #include "kutlog/dispatch.hpp"
+#include "kutlog/lobe.hpp"
+#include "kutlog/reference.hpp"
 
 namespace {
 
@@ -119,6 +122,51 @@ int measure_lobes(const std::vector<kutlog::Arch>& archs, const std::vector<std:
   return 0;
 }
 
+// --function pow_poly: kutlog::PowerPoly, the benchmarks' polynomial pow, in the lobes' units
+// (relative to the peak; ulps where t^n >= 0.6), unnormalized and with the Blinn-Phong coef, per
+// --n and arch: every float t from 2^16 floats below its cut to 1, every 61st below, and t > 1.
+int measure_power_poly(const std::vector<kutlog::Arch>& archs,
+                       const std::vector<std::string>& variants,
+                       const std::vector<std::string>& n_list, Format format) {
+  Table table({"function", "arch", "variant", "n", "max_abs_err", "max_ulp_epicenter",
+               "worst_input", "min_output", "max_output"});
+  for (kutlog::Arch arch : archs) {
+    const kutlog::ScopedArch forced(arch);
+    for (const std::string& variant : variants)
+      for (const std::string& n_text : n_list)
+        for (bool normalized : {false, true}) {
+          const double n = exponent_of(n_text, 1);
+          const double scale = normalized ? kutlog::ref::blinn_phong_exact_coef(n) : 1.0;
+          const kutlog::PowerPoly power(
+              n, variant == "precise" ? kutlog::Variant::precise : kutlog::Variant::fast, scale);
+          const std::uint32_t cut = order_key(power.kernel().t_zero), first = order_key(-1.0f),
+                              near_cut = cut - std::min(cut - first, 1u << 16),
+                              last = order_key(std::nextafter(1.0f, 2.0f));
+          LobeErrors errors;
+          std::vector<float> t, out;
+          for (std::uint64_t key = first; key <= last;) {  // in chunks of 2^16 floats
+            t.clear();
+            for (; key <= last && t.size() < (1u << 16); key += key < near_cut ? 61 : 1)
+              t.push_back(float_of_order_key(std::uint32_t(key)));
+            out.resize(t.size());
+            power.eval(t.data(), out.data(), t.size());
+            for (std::size_t i = 0; i < t.size(); ++i)
+              errors.add(t[i], out[i], scale,
+                         t[i] <= 0 ? 0.0 : std::pow(std::min(double(t[i]), 1.0), n));
+          }
+          table.add_row({normalized ? "pow_poly_normalized" : "pow_poly",
+                         std::string(kutlog::arch_name(arch)), variant, fmt::format("{:g}", n),
+                         fmt::format("{:.3g}", errors.max_abs_error),
+                         fmt::format("{:.3f}", errors.max_epicenter_ulp),
+                         fmt::format("{:.9g}", errors.worst_abs_input),
+                         fmt::format("{:.9g}", errors.min_output),
+                         fmt::format("{:.9g}", errors.max_output)});
+        }
+  }
+  table.print(format);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -129,7 +177,9 @@ int main(int argc, char** argv) {
       "in (0, 2^8] for each y in {1, 2, 5, 10, 50, 100, 500, 1000, 5000}, plus random pairs.\n"
       "--function kutlog measures the F_kutlog lobe kernels instead, over every float t in\n"
       "[-1, 1], for each --n, --k, --q: max_abs_err relative to the lobe's peak (1, or coef for\n"
-      "kutlog_normalized), max_ulp_epicenter where the lobe is >= 0.6 of its peak.",
+      "kutlog_normalized), max_ulp_epicenter where the lobe is >= 0.6 of its peak.\n"
+      "--function pow_poly measures kutlog::PowerPoly, the benchmarks' polynomial t^n, in the\n"
+      "same units for each --n and --variant.",
       "kutlog-ulp");
   std::vector<std::string> functions{"acos", "cos", "cos_halfpi", "exp", "log", "pow"};
   std::vector<std::string> arch_names{"all"};
@@ -195,10 +245,17 @@ int main(int argc, char** argv) {
       for (const std::string& n : n_list) exponent_of(n, 1);  // validates before any sweep
       return measure_lobes(archs, variants, n_list, k_list, q_list, threads, parse_format(format_name));
     }
+    if (std::find(functions.begin(), functions.end(), "pow_poly") != functions.end()) {
+      if (functions.size() > 1)
+        throw std::invalid_argument("--function pow_poly measures the polynomial pow; give it alone");
+      for (const std::string& n : n_list) exponent_of(n, 1);
+      return measure_power_poly(archs, variants, n_list, parse_format(format_name));
+    }
     for (const std::string& name : functions)
       if (name != "pow" && !find_unary_function(name))
         throw std::invalid_argument("unknown function '" + name +
-                                    "'; valid: acos, cos, cos_halfpi, exp, log, pow, kutlog");
+                                    "'; valid: acos, cos, cos_halfpi, exp, log, pow, kutlog, "
+                                    "pow_poly");
     if (profile && functions.size() != 1)
       throw std::invalid_argument("--profile measures one --function at a time");
     if (profile && summary) throw std::invalid_argument("--profile and --summary exclude each other");

@@ -23,8 +23,9 @@
 //   fast:    |out - scale F| <= 2^-16 scale everywhere.
 // Measured over every float t of the support (sampled below the cut: kutlog/accuracy.hpp) on
 // the grid n in {k+1, 10, 100, 1000, 10000}, k in 1..5, Q in {0.1, 0.5, 0.9}, and on random
-// lobes over n in [0.5, 10^6], k in 1..64, Q in [0.01, 0.99]; each kernel is accepted at setup only when its certified bound, or its run over
-// every float of the epicenter, meets the promise (a fit that misses is never kept).
+// lobes over n in [0.5, 10^6], k in 1..64, Q in [0.01, 0.99]; each kernel is accepted at setup
+// only when its certified bound, or its run over every float of the epicenter, meets the
+// promise (a fit that misses is never kept).
 //
 // Data rule (the reference's): t > 1 gives F(1) = 1 (coef when normalized), t at or below
 // cos(gran) and t <= 0 give 0, NaN gives NaN. Any count, any alignment, out may equal t.
@@ -101,8 +102,8 @@ struct LobeKernel {
     return with_q(double(center_t) - t_capped, [&](double q) { return scale_d - w * q; });
   }
   // F(t) by the scalar path: 0 at or below t_cut, NaN for NaN, else unrounded(t) rounded to
-  // float and clamped to [0, scale_f]. (A branch-free cut measured 4 to 8 times slower here:
-  // the clamps then depend on the polynomial of every t, half of them past the cut.)
+  // float and clamped to [0, scale_f]. A branch, not a select: past the cut the polynomial's
+  // tiny or meaningless values would cost a select every call (subnormal roundings included).
   [[gnu::always_inline]] float evaluate(float t) const {
     if (!(t > t_cut)) return t == t ? 0.0f : t;
     // Past the cut t is a number and so is the value: min and max clamp in one instruction each.
@@ -113,7 +114,7 @@ struct LobeKernel {
   // finish(q(x)), by Estrin's scheme: q's lower half plus x^(2^j) times its upper half, down
   // to single coefficients, so that a call's chain of dependent operations is log2 of the
   // degree deep, not the degree (a fragment loop's calls overlap in the CPU only as far as
-  // its reorder buffer reaches; Horner's rule took 1.2x the time at n = 1000). Unrolled for
+  // its reorder buffer reaches). Unrolled for
   // the degrees the setup fits (at most 16 for the polynomial form, fewer for the base).
   // src/lobe_bound.cpp bounds the roundings of this tree.
   template <class Finish>
@@ -205,6 +206,14 @@ struct LobeArrayKernels {
 extern std::atomic<const LobeArrayKernels*> active_lobe_loops;
 }  // namespace detail
 
+// The error bound the setup certified for one kernel of a Lobe, in the contract's units
+// (src/lobe_bound.hpp): at most the variant's promise, and for a fused kernel accepted by its
+// run over the epicenter, up to twice the promised ulps there (the run's measure is within the
+// promise). Where the support holds no float below 1 (no fit), the promise.
+struct KernelCertificate {
+  double abs_error = 0, epicenter_ulp = 0;
+};
+
 class Lobe {
  public:
   // Throws std::invalid_argument naming the parameter and its range: n finite > 0, k integer
@@ -225,8 +234,7 @@ class Lobe {
 
   // F(t), or coef_exact * F(t): one fragment, inline, no dispatch, no allocation. The same
   // contract as the arrays', whatever the flags this is compiled with. Always inlined: GCC
-  // (-O2 and -O3) called it out of line for its size, and the call, with the kernel's index
-  // computed per call, cost a fragment loop a sixth to a third of its time.
+  // would call it out of line for its size, the kernel's index then computed per call.
   [[gnu::always_inline]] float eval(float t, Variant variant = Variant::precise,
                                     Normalization normalization = Normalization::none) const {
     return kernel(variant, normalization, Arithmetic::scalar).evaluate(t);
@@ -239,9 +247,8 @@ class Lobe {
   float eval(T, Variant = Variant::precise, Normalization = Normalization::none) const = delete;
 
   // out[i] = F(t[i]), or coef_exact * F(t[i]). Inline up to one indirect call of the active
-  // arch's loop for this kernel (out of line, the dispatch was a call and 17 instructions
-  // before the jump to the loop; a call site's constant variant and normalization now fold
-  // the kernel's index).
+  // arch's loop for this kernel, so that a call site's constant variant and normalization
+  // fold the kernel's index.
   void eval(const float* t, float* out, std::size_t count, Variant variant = Variant::precise,
             Normalization normalization = Normalization::none) const {
     const detail::LobeArrayKernels* loops =
@@ -265,6 +272,11 @@ class Lobe {
     if (normalization == Normalization::exact_coef && !coef_fits_float_) throw_coef_overflow();
     return kernels_[kernel_index(variant, normalization, arithmetic)];
   }
+  // What the setup certified for that kernel (tests check it against measurement).
+  const KernelCertificate& certificate(Variant variant, Normalization normalization,
+                                       Arithmetic arithmetic) const {
+    return certificates_[kernel_index(variant, normalization, arithmetic)];
+  }
 
  private:
   [[noreturn]] void throw_coef_overflow() const;
@@ -283,6 +295,7 @@ class Lobe {
     return (int(variant) * 2 + int(normalization)) * 3 + int(arithmetic);
   }
   LobeKernel kernels_[2 * 2 * 3];
+  KernelCertificate certificates_[2 * 2 * 3];
   // The slot of each SIMD kernel's array loop in the per-arch tables
   // (detail::LobeArrayKernels), computed at setup: a call reads it instead of testing the
   // kernel's form, degree and finish.
@@ -333,8 +346,8 @@ struct PerLaneKernel {
 //   clamped to it; NaN n or t gives NaN. A range too wide for one fit in 1/n (tiny Q with n
 //   over many decades, e.g. Q = 1e-300 and n in [1, 10^38]) is refused the same way: split it.
 //   Contract: 0 <= out <= the lane's peak, its output at t = 1: exactly 1 unnormalized, within
-//   1.5 2^-22 of coef_exact(n) normalized (kPerLanePeakError); |out - scale F| <= 2^-20 scale (scale:
-//   1, or the lane's coef when normalized), measured on random (t, n) lanes of random
+//   1.5 2^-22 of coef_exact(n) normalized (kPerLanePeakError); |out - scale F| <= 2^-20 scale
+//   (scale: 1, or the lane's coef when normalized), measured on random (t, n) lanes of random
 //   materials over every k in 1..64, Q from 10^-6 to 1 - 5 10^-7 and n up to FLT_MAX
 //   (tests/test_lobe.cpp); the epicenter's ULP error is reported by kutlog/accuracy.hpp.
 class PerLaneLobe {
@@ -366,6 +379,42 @@ class PerLaneLobe {
   int k_;
   double Q_;
   PerLaneKernel kernel_;
+};
+
+// What the polynomial power needs for one exponent, precomputed (kutlog/simd/lobe.hpp): with
+// x = t - 1 (or, where decomposed, t = 2^e (1 + x), 1 + x in [sqrt(1/2), sqrt(2))),
+// y = n log2 t = x L(x) (+ n e), then scale 2^y = 2^round(y) E(y - round(y)).
+struct PowerPolyKernel {
+  static constexpr int kMaxLogDegree = 12;
+  static constexpr int kPreciseExpDegree = 6, kFastExpDegree = 4;  // of E, by variant
+  bool decomposed = false;  // t_zero below sqrt(1/2): t's exponent taken apart first
+  float t_zero = 0;         // out = 0 at and below it, where scale t^n < the variant's bound / 2
+  float n = 1;
+  int log_degree = 1, exp_degree = 6;
+  std::array<float, kMaxLogDegree + 1> log{};  // n log2(1 + x) / x
+  std::array<float, kPreciseExpDegree + 1> exp{};  // scale 2^f, exp[0] = the float scale
+};
+
+// scale * t^n as the fast pow a speed-minded renderer writes for one material: 2^(n log2 t)
+// with short polynomials fitted for that n over the only t that matter (t^n above the bound),
+// the benchmarks' strongest pow-based peer, at each variant's accuracy (kutlog/accuracy.hpp).
+//   Contract: |out - scale t^n| <= 2^-22 scale (precise), 2^-16 scale (fast), for every float
+//   t; 0 <= out <= the float scale; t >= 1 gives the float scale, t <= 0 and t where
+//   scale t^n < half the bound give 0, NaN gives NaN. No promise in ulps where t^n >= 0.6
+//   (`kutlog-ulp --function pow_poly` measures up to 2.2 ulps precise, 130 fast).
+//   Setup: n finite > 0, scale finite > 0 (std::invalid_argument naming them otherwise).
+class PowerPoly {
+ public:
+  PowerPoly(double n, Variant variant = Variant::precise, double scale = 1);
+  template <class N, class V, class S>
+    requires(!std::is_same_v<V, Variant>)
+  PowerPoly(N, V, S) = delete;
+  // out[i] = scale * t[i]^n. Any count, any alignment, out may equal t.
+  void eval(const float* t, float* out, std::size_t count) const;
+  const PowerPolyKernel& kernel() const { return kernel_; }
+
+ private:
+  PowerPolyKernel kernel_;
 };
 
 // Baselines over arrays, same data rule, dispatched like the lobe. out[i] = scale * t[i]^n

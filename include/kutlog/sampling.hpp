@@ -26,6 +26,7 @@
 //     (KutlogLobe::integration_limit(): gran, or pi/2 for n < k);
 //   |pdf - pdf_ref(direction)| <= kSamplerBound.pdf_error * peak, peak = the pdf at theta = 0,
 //     pdf_ref the reference's solid-angle density of the returned direction;
+//   the azimuth within kSamplerBound.phi_error (radians) of 2 pi u2;
 //   0 <= pdf <= peak, |direction| = 1 within a few float roundings, z >= 0.
 // Data rule: u1 and u2 are taken in [0, 1); a value below 0 counts as 0, one at or above 1 as
 // the largest float below 1; NaN in either gives NaN in every output of that sample. Any

@@ -22,11 +22,10 @@ using floats_of = xsimd::batch<float, Arch>;
 // `padding` in the others, and their store. No load or store leaves the arrays. AVX-512 moves them
 // with a lane mask; AVX2 loads with one (masked lanes never touch memory) but stores in halves, 4,
 // 2 and 1 floats by the bits of count, as SSE4.1 both loads and stores: AMD's AVX2 lane-masked
-// store took about 4 ns here, and SSE4.1's way through a local buffer (its scalar writes read back
-// as one vector, which no store forwards) cost a one-element call 25 to 30 ns, against 7 to 16 ns
-// now. Other archs (NEON) go through the buffer. Overloads on the arch's tag, the most derived
-// chosen, so that only their code has a buffer (an aligned buffer anywhere in a function costs
-// every call a stack realignment).
+// store is microcoded, and a local buffer's scalar writes, read back as one vector, wait for
+// store forwarding that never comes. Other archs (NEON) go through the buffer. Overloads on
+// the arch's tag, the most derived chosen, so that only their code has a buffer (an aligned
+// buffer anywhere in a function costs every call a stack realignment).
 template <class Arch>
 inline xsimd::batch<float, Arch> load_partial(xsimd::generic, const float* in, std::size_t count,
                                               float padding) {
@@ -109,8 +108,7 @@ inline void store_partial(xsimd::avx512f, float* out, xsimd::batch<float, Arch> 
 // Applies `kernel` to batches of `count` floats from each input array; the tail as a partial
 // batch padded with `padding` (a value inside every kernel's domain). Inlined into its caller,
 // so that what the kernel captures by reference is seen not to alias the output: out of line
-// (GCC 12's choice for some), pow_xsimd's loop recomputed its exponent's constants per batch,
-// 15 % slower.
+// (GCC 12's choice for some), a loop recomputed its kernel's constants per batch.
 template <class Arch, std::size_t Inputs, class Kernel>
 [[gnu::always_inline]] inline void map_arrays(const Kernel& kernel,
                                               const float* const (&inputs)[Inputs], float* out,
@@ -134,6 +132,29 @@ template <class Arch, std::size_t Inputs, class Kernel>
   store_partial<Arch>(Arch{}, out + i, value, tail);
 }
 
+// PowerPoly over an array: one loop per decomposition, variant (E's degree) and log degree,
+// picked per call by one lookup.
+template <class Arch, bool kDecomposed, int kExpDegree, int kLogDegree>
+void power_poly_loop(const PowerPolyKernel& kernel, const float* t, float* out, std::size_t count) {
+  map_arrays<Arch, 1>(simd::PreparedPowerPoly<Arch, kDecomposed, kLogDegree, kExpDegree>(kernel),
+                      {t}, out, count);
+}
+template <class Arch>
+void power_poly_array(const PowerPolyKernel& kernel, const float* t, float* out, std::size_t count) {
+  constexpr int kDegrees = PowerPolyKernel::kMaxLogDegree;
+  using Loop = void (*)(const PowerPolyKernel&, const float*, float*, std::size_t);
+  static constexpr auto kLoops = []<int... degree>(std::integer_sequence<int, degree...>) {
+    constexpr int kPrecise = PowerPolyKernel::kPreciseExpDegree, kFast = PowerPolyKernel::kFastExpDegree;
+    return std::array<Loop, 4 * kDegrees>{&power_poly_loop<Arch, false, kPrecise, degree + 1>...,
+                                          &power_poly_loop<Arch, false, kFast, degree + 1>...,
+                                          &power_poly_loop<Arch, true, kPrecise, degree + 1>...,
+                                          &power_poly_loop<Arch, true, kFast, degree + 1>...};
+  }(std::make_integer_sequence<int, kDegrees>());
+  const int form = 2 * int(kernel.decomposed) +
+                   int(kernel.exp_degree == PowerPolyKernel::kFastExpDegree);
+  kLoops[std::size_t(form * kDegrees + kernel.log_degree - 1)](kernel, t, out, count);
+}
+
 // The lobe over an array: the polynomial form with its degree as a template argument (unrolled,
 // coefficients in registers) and its finish fixed, the base_power form generic. The table holds
 // one per degree and finish, so that a call picks its loop by the slot its Lobe computed at
@@ -146,12 +167,8 @@ template <class Arch, int kDegree, simd::LobeFinish kFinish, bool kClamped>
 }
 // A span of at most one batch (a renderer's span of 16 on AVX-512) runs straight through, no
 // loop; longer spans jump to the loop. A whole batch is loaded and stored whole, never through
-// the lane mask: Zen 4 forwards no masked store to a later load, nor a store to a masked load
-// (18 to 20 cycles each, measured), and a caller who reads back the span it just shaded, as
-// shade() does, would wait for it (shade's spans of 16 took 1.2x the time with masked whole
-// batches). Alternated against the loop alone (AVX-512, n = 1000, k = 3 and 5, fastest of
-// three rounds): count 16 0.92x to 0.98x the time, count 1 0.96x to 1.0x, 157 and 4096
-// unchanged.
+// the lane mask: Zen 4 forwards no masked store to a later load, nor a store to a masked load,
+// and a caller who reads back the span it just shaded, as shade() does, would wait for it.
 template <class Arch, int kDegree, simd::LobeFinish kFinish = simd::LobeFinish::any,
           bool kClamped = true>
 void kutlog_lobe_array(const LobeKernel& kernel, const float* t, float* out, std::size_t count) {
@@ -194,8 +211,8 @@ inline void map_masked(const Kernel& kernel, const float* const (&inputs)[Inputs
   using F = xsimd::batch<float, Arch>;
   constexpr std::size_t N = F::size;
   // A batch no lane of which is selected is skipped, one whose every lane is stored whole: a
-  // rasterizer's coverage is mostly such batches, and AVX2's lane-masked store took about 4 ns
-  // per batch on an AMD EPYC (57 % of a 16x16 tile's shading under a random mask).
+  // rasterizer's coverage is mostly such batches, and AVX2's lane-masked store is microcoded
+  // on AMD.
   const auto run = [&](const float* const (&sources)[Inputs], std::size_t at, float* target,
                        const std::uint8_t* lanes) {
     const auto value = [&] {
@@ -227,8 +244,7 @@ inline void map_masked(const Kernel& kernel, const float* const (&inputs)[Inputs
 // unless the caller gave them; F(t) by the array loop of the kernel's slot, the one
 // Lobe::eval runs (degree unrolled, finish fixed, clamp dropped where proven needless); then
 // F, times max(N.L, 0) if asked, stored where mask selects. The buffers stay in L1. (One loop
-// per form and slot instead would compile each form 86 times per arch: measured 13x the code
-// and 6x the compile time of this file.)
+// per form and slot instead would compile each form 86 times per arch.)
 constexpr std::size_t kShadeChunk = 256;
 
 // Where a chunk's t and N.L are (N.L only read when options.times_n_dot_l): the given arrays
@@ -411,6 +427,7 @@ KernelTable make_kernel_table() {
     map_arrays<Arch, 1>([&](F v) { return simd::blinn_phong_u10(v, exponent, factor); }, {t},
                         out, count);
   };
+  table.power_poly = &power_poly_array<Arch>;
   table.shade_vectors = &shade_vectors_array<Arch>;
   table.shade_directions = &shade_directions_array<Arch>;
   table.shade_cosines = &shade_cosines_array<Arch>;

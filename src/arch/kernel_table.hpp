@@ -23,6 +23,8 @@ using ShadeDirectionsKernel = void (*)(const LobeKernel&, const ShadeOptions&, V
 using ShadeCosinesKernel = void (*)(const LobeKernel&, const ShadeOptions&, const float*,
                                     const float*, float*, std::size_t, const std::uint8_t*);
 
+using PowerPolyArrayKernel = void (*)(const PowerPolyKernel&, const float*, float*, std::size_t);
+
 using PerLaneArrayKernel = void (*)(const PerLaneKernel&, bool normalized, const float*,
                                     const float*, float*, std::size_t);
 
@@ -38,6 +40,7 @@ struct KernelTable : LobeArrayKernels {
   BinaryScalarArrayKernel pow_scalar_u10;
   PerLaneArrayKernel kutlog_per_lane;
   PowerLobeArrayKernel blinn_phong_xsimd, blinn_phong_u10;
+  PowerPolyArrayKernel power_poly;
   BinaryScalarArrayKernel schlick;
   ShadeVectorsKernel shade_vectors;
   ShadeDirectionsKernel shade_directions;

@@ -3,6 +3,7 @@
 //   kutlog_lobe: F_kutlog (or coef * F_kutlog) of a kutlog::Lobe, from t = cos x.
 //   blinn_phong_xsimd: t^n with xsimd::pow, what users have today (67 to 86 ULP at large n).
 //   blinn_phong_u10: t^n with pow_u10 (0.54 ULP).
+//   PreparedPowerPoly: t^n by 2^(n log2 t) with polynomials fitted per n (kutlog::PowerPoly).
 //   schlick: Schlick's rational approximation t / (n - n t + t).
 //
 // Every lobe follows the reference's data rule: t > 1 gives F(1), t <= 0 (and, for F_kutlog,
@@ -10,6 +11,7 @@
 #pragma once
 
 #include <array>
+#include <utility>
 
 #include "kutlog/lobe.hpp"
 #include "kutlog/simd/math.hpp"
@@ -48,8 +50,8 @@ constexpr LobeFinish lobe_finish(const LobeKernel& kernel) {
 
 // A LobeKernel with its constants broadcast once, for loops over many batches.
 // kDegree >= 0 fixes the float form's degree (kernel.degree must equal it): Horner's rule is
-// then unrolled with the coefficients in registers, about twice as fast as the generic loop
-// at degree 8. kFinish other than `any` fixes the finish (it must equal
+// then unrolled with the coefficients in registers, not reloaded per step as in the generic
+// loop. kFinish other than `any` fixes the finish (it must equal
 // lobe_finish<Arch>(kernel)): a span of one batch then tests no flag. kClamped = false
 // leaves out the clamp to [0, scale_f], for a kernel whose setup proved it needless
 // (kernel.clamped false, polynomial form). The array functions switch once per call to the
@@ -74,8 +76,7 @@ class PreparedLobe {
   // setup proved it does not, kClamped = false runs without).
   // A fixed degree is the polynomial form's (the base_power form runs with kDegree = -1).
   // The float form always inlined: with two calls in one function (a span's whole batch and its
-  // partial one) GCC called it out of line at degree 8, its batches through memory: 2.2x the
-  // time of a span of 16.
+  // partial one) GCC would call it out of line, its batches passed through memory.
   [[gnu::always_inline]] F operator()(F t) const {
     if constexpr (!kClamped) return float_form(t);
     if (kDegree >= 0 || kernel_.form == LobeKernel::Form::polynomial)
@@ -231,6 +232,57 @@ inline floats<Arch> blinn_phong_u10(floats<Arch> t, floats<Arch> n,
                                     floats<Arch> scale = floats<Arch>(1.0f)) {
   return scale * pow_u10(detail::clamp_zero_to(t, floats<Arch>(1.0f)), n);
 }
+
+// scale t^n by a PowerPolyKernel (kutlog/lobe.hpp), its degrees fixed here (Horner's rule
+// unrolled, coefficients in registers): the array functions pick the instance per kernel.
+template <class Arch, bool kDecomposed, int kLogDegree, int kExpDegree>
+class PreparedPowerPoly {
+ public:
+  using F = floats<Arch>;
+  explicit PreparedPowerPoly(const PowerPolyKernel& kernel)
+      : t_zero_(kernel.t_zero), n_(kernel.n) {
+    for (std::size_t i = 0; i <= std::size_t(kLogDegree); ++i) log_[i] = F(kernel.log[i]);
+    for (std::size_t i = 0; i <= std::size_t(kExpDegree); ++i) exp_[i] = F(kernel.exp[i]);
+  }
+
+  [[gnu::always_inline]] F operator()(F t) const {
+    using I = ints<Arch>;
+    const F one(1.0f);
+    const F capped = xsimd::min(one, t);  // NaN kept: x86's min returns its second operand
+    F y;
+    if constexpr (kDecomposed) {  // garbage for t <= 0, cut below
+      const detail::Decomposed<Arch> d = detail::decompose<false>(capped);
+      const F x = d.m - one;
+      y = mul_add(d.e, n_, x * horner<kLogDegree>(x, log_));
+    } else {
+      const F x = capped - one;  // exact for t in [1/2, 1]
+      y = x * horner<kLogDegree>(x, log_);
+    }
+    // y <= 0; 2^y = 2^i E(y - i), i = round(y): y + 1.5 2^23 holds i in its low bits (whose
+    // shift by 23 drops the rest), added to E's exponent bits. No conversion to integer.
+    const F shifter(0x1.8p23f), shifted = y + shifter;
+    const F power = horner<kExpDegree>(y - (shifted - shifter), exp_);
+    const I exponent = xsimd::bitwise_cast<I>(shifted) << 23;
+    const F value = xsimd::bitwise_cast<F>(xsimd::bitwise_cast<I>(power) + exponent);
+    if constexpr (kDecomposed)  // the exponent's bits lost NaN
+      return xsimd::select(t <= t_zero_, F(0.0f), xsimd::select(xsimd::isnan(t), t, value));
+    return xsimd::select(t <= t_zero_, F(0.0f), value);
+  }
+
+ private:
+  template <int kDegree, std::size_t N>
+  [[gnu::always_inline]] static F horner(F x, const std::array<F, N>& c) {
+    F result = c[std::size_t(kDegree)];
+    [&]<std::size_t... i>(std::index_sequence<i...>) {
+      ((result = mul_add(result, x, c[std::size_t(kDegree) - 1 - i])), ...);
+    }(std::make_index_sequence<std::size_t(kDegree)>());
+    return result;
+  }
+
+  F t_zero_, n_;
+  std::array<F, PowerPolyKernel::kMaxLogDegree + 1> log_;
+  std::array<F, PowerPolyKernel::kPreciseExpDegree + 1> exp_;
+};
 
 // Schlick's t / (n - n t + t), t clamped to [0, 1].
 template <class Arch>

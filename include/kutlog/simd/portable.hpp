@@ -363,8 +363,7 @@ inline batch<T, A> max(batch<T, A> const& self, batch<T, A> const& other,
 // In the current rounding mode, which kutlog's contracts require to be to-nearest: |x| plus
 // 2^(mantissa bits) rounds away its fraction, and subtracting it again is exact; the sign of x
 // goes back on (-0.4 gives -0). |x| at or above that is an integer already, or inf or NaN.
-// Vector arithmetic: std::nearbyint, a library call per lane, made pow_u10 and cos_u10 1.4
-// times as slow.
+// Vector arithmetic, not std::nearbyint, a library call per lane.
 template <class A, class T, class = std::enable_if_t<std::is_floating_point_v<T>>>
 inline batch<T, A> nearbyint(batch<T, A> const& self, requires_arch<kutlog_portable::portable>) noexcept {
   const batch<T, A> magnitude = abs<A>(self, A{}),

@@ -130,7 +130,7 @@ class PreparedSampler {
   // AVX-512 looks the coarse table up with permutes (a gather of 16 lanes costs about 16
   // loads, a two-register permute one instruction); the other archs gather from the fine one,
   // AVX2 with its instruction (xsimd 8.1's batch::gather never reaches its AVX2 overload and
-  // loads lane by lane: the sampler took 1.13x the time).
+  // loads lane by lane).
   F polar_angle(F u1) const {
     using K = SamplerKernel;
     F p;
@@ -189,8 +189,8 @@ class PreparedSampler {
 // PreparedSampler's steps for one (u1, u2), in double: a path tracer's one direction per
 // bounce, where a batch would compute one lane of many. Double leaves the float roundings of
 // the batch code out (the bounds' errors are the fit's and the outputs' roundings). The arch
-// brings its FMA only: one sample's cost is a chain of dependent multiply-adds (0.81x the time
-// fused, on AVX-512). Helpers are templates on the arch, as everything here: each arch's TU
+// brings its FMA only: one sample's cost is a chain of dependent multiply-adds, which fusing
+// shortens. Helpers are templates on the arch, as everything here: each arch's TU
 // compiles its own (so integer_power below is not detail::integer_power<double>, which every
 // arch's TU would instantiate under one name, compiled with different flags).
 namespace one_sample {
