@@ -46,7 +46,12 @@ std::string_view explanation(RatioKind kind) {
              "the public array functions with `Normalization::exact_coef`. `kutlog_perlane` is a\n"
              "`PerLaneLobe` whose n per lane comes from a glossiness map, log-uniform in\n"
              "[n/2, 2n]; `pow_precise` is Blinn-Phong by kutlog's 1-ULP `pow`; `schlick` is\n"
-             "Schlick's rational approximation of Blinn-Phong. Above 1x, faster than `pow_xsimd`.\n";
+             "Schlick's rational approximation of Blinn-Phong. Above 1x, faster than `pow_xsimd`.\n"
+             "`precise / pow_poly_precise` and `fast / pow_poly_fast` set each variant against\n"
+             "`kutlog::PowerPoly` of the same accuracy: 2^(n log2 t) with short polynomials\n"
+             "fitted for that n over the only t that matter, the fast pow a speed-minded renderer\n"
+             "writes for one material and the strongest pow-based peer (its error: `kutlog-ulp\n"
+             "--function pow_poly`); above 1x, kutlog is faster than it.\n";
     case RatioKind::fragment:
       return "## One fragment per call\n\n"
              "The scalar `lobe.eval(t)` called once per fragment in a loop, against `powf(t, n)`\n"
@@ -54,7 +59,10 @@ std::string_view explanation(RatioKind kind) {
              "support: half the calls fall past the cut-off, where `eval(t)` returns 0 after one\n"
              "branch. Over 4096 inputs run again and again, the branch predictor learns part of\n"
              "which do; over 262144 it cannot, which is the scalar path's worst case (a\n"
-             "rasterizer's fragments past the cut-off come in runs). `/ it` is the row's speed\n"
+             "rasterizer's fragments past the cut-off come in runs). `inside`: 4096 t inside the\n"
+             "lobe only, where a path tracer evaluates the direction it sampled; `raster`: 4096 t\n"
+             "along scanlines of 64 fragments across the highlight, the angle falling to a random\n"
+             "minimum and rising again, as a rasterizer meets them. `/ it` is the row's speed\n"
              "over the peer's. The benchmark is compiled with the compiler's default flags.\n";
     case RatioKind::span:
       return "## Spans\n\n"
