@@ -135,9 +135,18 @@ LobeSampler::LobeSampler(double n, int k, double Q, LobeUse use)
   // The coarse fit interpolates the reference; the fine one, whose cells lie within the coarse
   // cells, interpolates the coarse fit's full series (degree 12, within about 1e-10 G of the
   // reference), which costs no inverse-CDF solve: the setup solves about 500 instead of 3000.
+  // Consecutive solves are a cell's nodes in order, then the next cell's: the secant through
+  // the last two roots guesses the next one closely, which the solve keeps if it falls inside
+  // its bracket.
+  double last_xi[2] = {0, 0}, last_theta[2] = {0, 0};
   const Fit coarse = fit_cells(
       [&](bool lower, double argument) {
-        return polar.inverse_cdf(lower ? argument : 1 - argument);
+        const double xi = lower ? argument : 1 - argument;
+        const double slope = (last_theta[1] - last_theta[0]) / (last_xi[1] - last_xi[0]);
+        const double theta = polar.inverse_cdf(xi, last_theta[1] + (xi - last_xi[1]) * slope);
+        last_xi[0] = last_xi[1], last_theta[0] = last_theta[1];
+        last_xi[1] = xi, last_theta[1] = theta;
+        return theta;
       },
       limit_, K::kCoarse, K::kCoarseMaxDegree, K::kCoarseStride, kernel_.coarse.data());
   const Fit fine = fit_cells(

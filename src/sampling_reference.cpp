@@ -48,13 +48,18 @@ PolarAngleDistribution::PolarAngleDistribution(double n, int k, double Q, LobeUs
   total_ = lobe_.sine_moment_times_c_squared(limit(), frequency_);
   // c^2 p / (2 pi total) would overflow in c^2 for n near DBL_MAX only after the division.
   density_scale_ = lobe_.c() * (lobe_.c() * frequency_ / (2 * pi * total_));
-  // The table itself: the same safeguarded solve, from the whole range (7 to 12 CDF
-  // evaluations each, measured over k = 1, 3, 5 and n from 0.01 to 1e300).
+  // The table itself: the same safeguarded solve, each quantile from the one below.
   quantiles_[0] = 0;
   quantiles_[kQuantileCells] = limit();
-  for (int i = 1; i < kQuantileCells; ++i)
-    quantiles_[i] = solve_in_bracket(static_cast<double>(i) / kQuantileCells, 0, limit(),
-                                     0.5 * limit());
+  for (int i = 1; i < kQuantileCells; ++i) {
+    // Bracketed by the quantile below; guessed by a Newton step from it (the density is 0 at
+    // theta = 0, so the first guesses the middle).
+    const double below = quantiles_[i - 1], below_density = density(below);
+    const double guess = below_density > 0 ? below + 1.0 / kQuantileCells / below_density
+                                           : 0.5 * limit();
+    quantiles_[i] = solve_in_bracket(static_cast<double>(i) / kQuantileCells, below, limit(),
+                                     guess);
+  }
 }
 
 double PolarAngleDistribution::solid_angle_density(double theta) const {
@@ -74,6 +79,10 @@ double PolarAngleDistribution::cdf(double theta) const {
 }
 
 double PolarAngleDistribution::inverse_cdf(double xi) const {
+  return inverse_cdf(xi, std::numeric_limits<double>::quiet_NaN());
+}
+
+double PolarAngleDistribution::inverse_cdf(double xi, double theta_guess) const {
   validate_unit_interval(xi, "xi");
   const double G = limit();
   if (xi == 0) return 0;
@@ -86,7 +95,9 @@ double PolarAngleDistribution::inverse_cdf(double xi) const {
   const int cell = std::min(static_cast<int>(scaled), kQuantileCells - 1);
   const double lo = quantiles_[cell], hi = quantiles_[cell + 1], t = scaled - cell;
   double guess;
-  if (cell == 0)
+  if (theta_guess > lo && theta_guess < hi)
+    guess = theta_guess;
+  else if (cell == 0)
     guess = hi * std::sqrt(t);
   else if (cell == kQuantileCells - 1)
     guess = G - (G - lo) * std::pow(1 - t, 1.0 / (lobe_.k() + 1));
@@ -101,7 +112,8 @@ double PolarAngleDistribution::solve_in_bracket(double xi, double lo, double hi,
   double previous_step = hi - lo;
   for (int iteration = 0; iteration < 256; ++iteration) {
     const double excess = cdf(theta) - xi;
-    if (excess == 0) return theta;
+    // Within the CDF's own rounding of xi, further steps would chase that rounding.
+    if (std::fabs(excess) <= 8 * kEpsilon * xi) return theta;
     (excess < 0 ? lo : hi) = theta;
     double next = theta - excess / density(theta);
     // Bisect where Newton leaves the bracket (or the density is 0) or converges too slowly.

@@ -256,6 +256,11 @@ TEST_P(InverseCdf, RoundTrips) {
       const double theta = polar.inverse_cdf(xi);
       ASSERT_TRUE(theta > 0 && theta < polar.limit()) << xi;
       EXPECT_NEAR(polar.cdf(theta), xi, 4e-16 + 1e-13 * xi) << xi;
+      // A caller's guess changes the path to the root, not the root.
+      for (double guess : {std::nan(""), -1.0, 0.0, theta * (1 - 1e-3), theta * (1 + 1e-9),
+                           2 * polar.limit()})
+        EXPECT_NEAR(polar.cdf(polar.inverse_cdf(xi, guess)), xi, 4e-16 + 1e-13 * xi)
+            << xi << " from " << guess;
     }
     for (double fraction : {1e-6, 0.01, 0.3, 0.6, 0.9}) {
       const double theta = fraction * polar.limit();

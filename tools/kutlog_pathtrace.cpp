@@ -87,7 +87,7 @@ int main(int argc, char** argv) {
   app.add_option("--threads", threads, "Threads rendering rows")->check(CLI::Range(1, 256))->capture_default_str();
   kutlog::tools::add_format_option(app, format_name);
   return kutlog::tools::run_tool(app, argc, argv, [&] {
-    const kutlog::ref::KutlogMicrofacet brdf(n, k, Q);  // validates n, k, Q
+    const pt::Material material(n, k, Q);  // validates n, k, Q
     if (max_spp < 1 || max_spp > 65536 || !std::has_single_bit(unsigned(max_spp)))
       throw std::invalid_argument("--max-spp: must be a power of two in [1, 65536], got " +
                                   std::to_string(max_spp));
@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
       throw std::invalid_argument("--reference-spp: must be >= --max-spp = " +
                                   std::to_string(max_spp) + ", got " + std::to_string(reference_spp));
     const pt::Environment sky = pt::Environment::sky();
-    const pt::Scene scene{brdf, sky, width, height};
+    const pt::Scene scene{material, sky, width, height};
     const std::vector<int> checkpoints = powers_of_two_up_to(max_spp);
     const auto start = std::chrono::steady_clock::now();
     // The reference draws other random numbers than the lobe image: its noise must not

@@ -94,26 +94,26 @@ std::string_view sampler_label(Sampler sampler) {
   return sampler == Sampler::lobe ? "F_kutlog lobe" : "uniform hemisphere";
 }
 
-// The one call into kutlog's sampler (the scalar reference; a SIMD sampler would be called
-// here instead).
-std::optional<ref::DirectionSample> draw_direction(const ref::KutlogMicrofacet& brdf,
-                                                   Sampler sampler, const Vec3& wo, double u1,
-                                                   double u2) {
-  if (sampler == Sampler::lobe) return brdf.sample(wo, u1, u2);
+std::optional<ref::DirectionSample> draw_direction(const Material& material, Sampler sampler,
+                                                   const Vec3& wo, double u1, double u2) {
+  if (sampler == Sampler::lobe) {
+    const SampledDirection wm = material.sampler().sample(float(u1), float(u2));
+    return material.brdf().reflect(wo, {{wm.x, wm.y, wm.z}, wm.pdf});
+  }
   const double cos_theta = u1, sin_theta = std::sqrt(std::max(0.0, 1 - u1 * u1));
   const double phi = 2 * kPi * u2;
   return ref::DirectionSample{{sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta},
                               1 / (2 * kPi)};
 }
 
-Rgb estimate_reflected(const ref::KutlogMicrofacet& brdf, Sampler sampler,
+Rgb estimate_reflected(const Material& material, Sampler sampler,
                        const Environment& environment, const Vec3& normal, const Vec3& wo,
                        double u1, double u2) {
   const Frame frame(normal);
   const Vec3 wo_local = frame.to_local(wo);
-  const auto wi = draw_direction(brdf, sampler, wo_local, u1, u2);
+  const auto wi = draw_direction(material, sampler, wo_local, u1, u2);
   if (!wi || !(wi->pdf > 0)) return {};
-  const double weight = brdf.eval(wo_local, wi->direction) * wi->direction.z / wi->pdf;
+  const double weight = material.brdf().eval(wo_local, wi->direction) * wi->direction.z / wi->pdf;
   if (weight == 0) return {};  // the environment lookup would only be multiplied by 0
   return weight * environment.radiance(frame.to_world(wi->direction));
 }
@@ -155,7 +155,7 @@ std::vector<Image> render(const Scene& scene, Sampler sampler, std::uint64_t see
     std::size_t next = 0;
     for (int sample = 1; sample <= spp_checkpoints.back(); ++sample) {
       const double u1 = uniform_double(random), u2 = uniform_double(random);
-      sum += estimate_reflected(scene.brdf, sampler, scene.environment, normal, wo, u1, u2);
+      sum += estimate_reflected(scene.material, sampler, scene.environment, normal, wo, u1, u2);
       if (sample == spp_checkpoints[next]) {
         images[next].at(column, row) = (1.0 / sample) * sum;
         images[next].covered[std::size_t(row) * scene.width + column] = 1;

@@ -6,6 +6,8 @@
 // The object is a sphere because it is convex: no reflected ray meets it again, so direct
 // lighting from the environment is the whole light transport and no ray-object test is needed
 // beyond the camera's. kutlog and the standard library only (the images are the tool's).
+// Directions come from kutlog's SIMD LobeSampler, as a renderer would draw them; the
+// reference BRDF (the spec) weighs them.
 #pragma once
 
 #include <cstdint>
@@ -13,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "kutlog/sampling.hpp"
 #include "kutlog/sampling_reference.hpp"
 
 namespace kutlog::pathtrace {
@@ -50,6 +53,20 @@ class Environment {
   bool white_;
 };
 
+// The sphere's material: the reference BRDF and a LobeSampler of the same n, k, Q.
+class Material {
+ public:
+  // std::invalid_argument naming the parameter, as the reference's.
+  Material(double n, int k, double Q)
+      : brdf_(n, k, Q), sampler_(n, k, Q, LobeUse::microfacet) {}
+  const ref::KutlogMicrofacet& brdf() const { return brdf_; }
+  const LobeSampler& sampler() const { return sampler_; }
+
+ private:
+  ref::KutlogMicrofacet brdf_;
+  LobeSampler sampler_;
+};
+
 // How the direction of each sample is drawn. kSamplers drives the tool's images, CSV columns
 // and labels.
 enum class Sampler { lobe, uniform };
@@ -60,15 +77,15 @@ std::string_view sampler_name(Sampler sampler);
 std::string_view sampler_label(Sampler sampler);
 
 // One direction wi for the outgoing direction wo, both in the local shading frame (z the
-// normal), from the uniform numbers u1, u2 in [0, 1): the lobe's sampler (no direction where
-// it draws none, which the estimate weighs 0) or uniform over the hemisphere (pdf 1 / (2 pi)).
-std::optional<ref::DirectionSample> draw_direction(const ref::KutlogMicrofacet& brdf,
-                                                   Sampler sampler, const Vec3& wo, double u1,
-                                                   double u2);
+// normal), from the uniform numbers u1, u2 in [0, 1): the material's LobeSampler, its half
+// vector reflected by the reference (no direction where the reflection falls below the
+// horizon, which the estimate weighs 0), or uniform over the hemisphere (pdf 1 / (2 pi)).
+std::optional<ref::DirectionSample> draw_direction(const Material& material, Sampler sampler,
+                                                   const Vec3& wo, double u1, double u2);
 
 // One sample's estimate f(wo, wi) L(wi) cos(theta_i) / pdf(wi) of the radiance reflected
 // towards wo (a unit vector, world frame) at a point of unit normal `normal`.
-Rgb estimate_reflected(const ref::KutlogMicrofacet& brdf, Sampler sampler,
+Rgb estimate_reflected(const Material& material, Sampler sampler,
                        const Environment& environment, const Vec3& normal, const Vec3& wo,
                        double u1, double u2);
 
@@ -83,7 +100,7 @@ struct Image {
 };
 
 struct Scene {
-  const ref::KutlogMicrofacet& brdf;
+  const Material& material;
   const Environment& environment;
   int width, height;
 };
