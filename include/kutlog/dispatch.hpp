@@ -11,11 +11,13 @@
 // neon64; on any other CPU portable alone.
 //
 // For tests, KUTLOG_CPU_HIDE=avx512[,avx2,...] makes kutlog treat the CPU as lacking those
-// archs (and every arch ranked above them); a name it does not know makes the first query
-// throw std::runtime_error saying so.
+// archs (and every arch ranked above them). A name in KUTLOG_ARCH or KUTLOG_CPU_HIDE that is
+// unknown or unsupported is ignored, printed once on stderr and kept by
+// arch_environment_error(): array calls never throw for it (docs/bad-input.md).
 #pragma once
 
 #include <array>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -49,10 +51,14 @@ bool arch_supported(Arch arch);
 // The compiled archs this machine runs, best first.
 std::vector<Arch> supported_archs();
 
-// The arch the array functions use now: the forced one, else KUTLOG_ARCH if set, else the
-// best supported. A KUTLOG_ARCH that names an unknown or unsupported arch makes the first use
-// throw std::runtime_error saying so (never an illegal instruction).
+// The arch the array functions use now: the forced one, else KUTLOG_ARCH if it names a
+// supported arch, else the best supported. Throws std::runtime_error only on a CPU that runs
+// no compiled arch (never an illegal instruction).
 Arch active_arch();
+
+// What was wrong with KUTLOG_ARCH or KUTLOG_CPU_HIDE, or empty: call it at startup to refuse
+// a misspelt arch instead of running on the fallback.
+std::string arch_environment_error();
 
 // Makes the array functions use `arch` from now on, in every thread. Throws
 // std::runtime_error if this machine cannot run it.

@@ -31,9 +31,8 @@
 // cos(gran) and t <= 0 give 0, NaN gives NaN. Any count, any alignment, out may equal t.
 // Thread-safe (const), no allocation in eval.
 //
-// Normalization::exact_coef needs coef <= FLT_MAX (n up to about 10^38, by k and Q): beyond,
-// every normalized call throws std::invalid_argument before writing anything (a coef of +inf
-// would turn the peak into inf and the rest into NaN); Normalization::none works for every n.
+// A Lobe exists only where its exact coef fits a float (n up to about 10^39, by k and Q): the
+// constructor refuses larger n, so every eval is noexcept (docs/bad-input.md).
 #pragma once
 
 #include <algorithm>
@@ -95,7 +94,7 @@ struct LobeKernel {
   // The scalar path, in double: the value before its one rounding to float (meaningful for
   // t > t_cut; finite elsewhere in [-1, 1], NaN for NaN). Always inlined, as evaluate: GCC
   // would call them for their size, and the call costs a fragment loop a fifth of its time.
-  [[gnu::always_inline]] double unrounded(float t) const {
+  [[gnu::always_inline]] double unrounded(float t) const noexcept {
     const double t_capped = t < 1.0f ? double(t) : 1.0, w = 1.0 - t_capped;  // NaN kept
     if (form == Form::base_power)
       return with_q(w, [&](double q) { return scale_d * base_power(1.0 - w * q); });
@@ -104,7 +103,7 @@ struct LobeKernel {
   // F(t) by the scalar path: 0 at or below t_cut, NaN for NaN, else unrounded(t) rounded to
   // float and clamped to [0, scale_f]. A branch, not a select: past the cut the polynomial's
   // tiny or meaningless values would cost a select every call (subnormal roundings included).
-  [[gnu::always_inline]] float evaluate(float t) const {
+  [[gnu::always_inline]] float evaluate(float t) const noexcept {
     if (!(t > t_cut)) return t == t ? 0.0f : t;
     // Past the cut t is a number and so is the value: min and max clamp in one instruction each.
     return std::min(std::max(float(unrounded(t)), 0.0f), scale_f);
@@ -216,8 +215,9 @@ struct KernelCertificate {
 
 class Lobe {
  public:
-  // Throws std::invalid_argument naming the parameter and its range: n finite > 0, k integer
-  // in [1, 64], Q in (0, 1). A k that is not of an integer type does not compile (no silent
+  // Throws std::invalid_argument naming the parameter and its range: n finite > 0 with
+  // coef_exact() <= FLT_MAX, k integer in [1, 64], Q in (0, 1); std::runtime_error if the
+  // CPU runs none of the compiled archs. A k that is not of an integer type does not compile (no silent
   // truncation of Lobe(50, 0.5, 3) or of k = 2.5).
   Lobe(double n, int k, double Q);
   template <class N, class K, class Anchor>
@@ -236,7 +236,7 @@ class Lobe {
   // contract as the arrays', whatever the flags this is compiled with. Always inlined: GCC
   // would call it out of line for its size, the kernel's index then computed per call.
   [[gnu::always_inline]] float eval(float t, Variant variant = Variant::precise,
-                                    Normalization normalization = Normalization::none) const {
+                                    Normalization normalization = Normalization::none) const noexcept {
     return kernel(variant, normalization, Arithmetic::scalar).evaluate(t);
   }
   // t is a float, as the kernels' inputs are. A double (or an integer) would be rounded here
@@ -250,10 +250,10 @@ class Lobe {
   // arch's loop for this kernel, so that a call site's constant variant and normalization
   // fold the kernel's index.
   void eval(const float* t, float* out, std::size_t count, Variant variant = Variant::precise,
-            Normalization normalization = Normalization::none) const {
+            Normalization normalization = Normalization::none) const noexcept {
     const detail::LobeArrayKernels* loops =
         detail::active_lobe_loops.load(std::memory_order_acquire);
-    if (!loops || (normalization == Normalization::exact_coef && !coef_fits_float_)) [[unlikely]]
+    if (!loops) [[unlikely]]
       return eval_out_of_line(t, out, count, variant, normalization);
     const int index = kernel_index(variant, normalization,
                                    loops->fused_fma ? Arithmetic::fused : Arithmetic::unfused);
@@ -263,13 +263,12 @@ class Lobe {
   // The precomputed kernel of a variant, for users who inline kutlog/simd/lobe.hpp: each was
   // fitted and checked for the arithmetic it will run on, with fused multiply-add (AVX2,
   // AVX-512: simd::has_fused_fma<Arch>) or without (SSE4.1).
-  // Throws as eval does for Normalization::exact_coef when coef does not fit in a float.
-  const LobeKernel& kernel(Variant variant, Normalization normalization, bool fused_fma) const {
+  const LobeKernel& kernel(Variant variant, Normalization normalization,
+                           bool fused_fma) const noexcept {
     return kernel(variant, normalization, fused_fma ? Arithmetic::fused : Arithmetic::unfused);
   }
   const LobeKernel& kernel(Variant variant, Normalization normalization,
-                           Arithmetic arithmetic) const {
-    if (normalization == Normalization::exact_coef && !coef_fits_float_) throw_coef_overflow();
+                           Arithmetic arithmetic) const noexcept {
     return kernels_[kernel_index(variant, normalization, arithmetic)];
   }
   // What the setup certified for that kernel (tests check it against measurement).
@@ -280,14 +279,13 @@ class Lobe {
 
  private:
   [[noreturn]] void throw_coef_overflow() const;
-  // The array eval's first call (and first after reset_arch), and its throw (src/dispatch.cpp).
+  // The array eval's first call, and first after reset_arch (src/dispatch.cpp).
   [[gnu::cold]] void eval_out_of_line(const float* t, float* out, std::size_t count,
-                                      Variant variant, Normalization normalization) const;
+                                      Variant variant, Normalization normalization) const noexcept;
 
   double n_, Q_;
   int k_;
   double c_, cutoff_angle_, coef_exact_;
-  bool coef_fits_float_;
   // One kernel per variant, normalization and arithmetic, in one flat array: the array eval
   // computes the index with one multiply-add.
   static constexpr int kernel_index(Variant variant, Normalization normalization,
@@ -315,7 +313,7 @@ struct PerLaneKernel {
 
   // F(t; n), or coef(n) F(t; n), for one fragment in double precision, rounded once to float:
   // the SIMD kernel's formulas (kutlog/simd/lobe.hpp), without its float roundings.
-  float evaluate(float t, float n, bool normalized) const {
+  float evaluate(float t, float n, bool normalized) const noexcept {
     if (t != t || n != n) return t + n;  // NaN
     const double n_clamped = double(n < n_min ? n_min : n > n_max ? n_max : n);
     const double y_offset = 1.0 / n_clamped - double(y_center);
@@ -330,7 +328,7 @@ struct PerLaneKernel {
   }
 
  private:
-  static double horner(const Coefficients& coefficients, int degree, double x) {
+  static double horner(const Coefficients& coefficients, int degree, double x) noexcept {
     std::size_t i = std::size_t(degree);
     double result = double(coefficients[i]);
     while (i-- > 0) result = result * x + double(coefficients[i]);
@@ -362,7 +360,7 @@ class PerLaneLobe {
   double Q() const { return Q_; }
   // F(t; n), or coef_exact(n) * F(t; n): one fragment, inline, no dispatch, no allocation,
   // the same contract as the arrays'.
-  float eval(float t, float n, Normalization normalization = Normalization::none) const {
+  float eval(float t, float n, Normalization normalization = Normalization::none) const noexcept {
     return kernel_.evaluate(t, n, normalization == Normalization::exact_coef);
   }
   // Floats only, as Lobe::eval(float): a double t or n does not compile.
@@ -372,7 +370,7 @@ class PerLaneLobe {
   float eval(T, N, Normalization = Normalization::none) const = delete;
   // out[i] = F(t[i]; n[i]), or coef_exact(n[i]) * F(t[i]; n[i]).
   void eval(const float* t, const float* n, float* out, std::size_t count,
-            Normalization normalization = Normalization::none) const;
+            Normalization normalization = Normalization::none) const noexcept;
   const PerLaneKernel& kernel() const { return kernel_; }
 
  private:
@@ -410,7 +408,7 @@ class PowerPoly {
     requires(!std::is_same_v<V, Variant>)
   PowerPoly(N, V, S) = delete;
   // out[i] = scale * t[i]^n. Any count, any alignment, out may equal t.
-  void eval(const float* t, float* out, std::size_t count) const;
+  void eval(const float* t, float* out, std::size_t count) const noexcept;
   const PowerPolyKernel& kernel() const { return kernel_; }
 
  private:
