@@ -268,6 +268,20 @@ CertifiedKernel fit_kernel(const ref::KutlogLobe& reference, const detail::LobeS
                            std::to_string(reference.Q()) + ") meets the bound of its variant");
 }
 
+[[noreturn]] void throw_coef_overflow(double n, int k, double Q, double coef) {
+  // coef grows like n for large n: the largest n whose coef fits a float, from coef at 1e30.
+  constexpr double kLargeN = 1e30;
+  const double n_limit =
+      kLargeN * (std::numeric_limits<float>::max() / ref::coef_exact(kLargeN, k, Q));
+  char message[320];
+  std::snprintf(message, sizeof message,
+                "kutlog: Lobe(n = %g, k = %d, Q = %g): n is out of range: its exact coef %g "
+                "exceeds FLT_MAX; for k = %d and Q = %g, n must be at most about %.3g "
+                "(coef <= FLT_MAX: normalized kernels compute in float)",
+                n, k, Q, coef, k, Q, n_limit);
+  throw std::invalid_argument(message);
+}
+
 }  // namespace
 
 Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
@@ -275,7 +289,8 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
   c_ = reference.c();
   cutoff_angle_ = reference.cutoff_angle();
   coef_exact_ = reference.coef_exact();
-  if (!(coef_exact_ <= std::numeric_limits<float>::max())) throw_coef_overflow();
+  if (!(coef_exact_ <= std::numeric_limits<float>::max()))
+    throw_coef_overflow(n, k, Q, coef_exact_);
   detail::require_runnable_arch();
   const double limit = reference.integration_limit();
   const double half_sine = std::sin(0.5 * limit);
@@ -304,20 +319,6 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
         certificates_[index] = {fitted.certified.abs_error, fitted.certified.epicenter_ulp};
         array_slots_[index] = std::uint8_t(detail::LobeArrayKernels::slot_of(kernels_[index]));
       }
-}
-
-void Lobe::throw_coef_overflow() const {
-  // coef grows like n for large n: the largest n whose coef fits a float, from coef at 1e30.
-  constexpr double kLargeN = 1e30;
-  const double n_limit =
-      kLargeN * (std::numeric_limits<float>::max() / ref::coef_exact(kLargeN, k_, Q_));
-  char message[320];
-  std::snprintf(message, sizeof message,
-                "kutlog: Lobe(n = %g, k = %d, Q = %g): n is out of range: its exact coef %g "
-                "exceeds FLT_MAX; for k = %d and Q = %g, n must be at most about %.3g "
-                "(coef <= FLT_MAX: normalized kernels compute in float)",
-                n_, k_, Q_, coef_exact_, k_, Q_, n_limit);
-  throw std::invalid_argument(message);
 }
 
 }  // namespace kutlog

@@ -278,7 +278,6 @@ class Lobe {
   }
 
  private:
-  [[noreturn]] void throw_coef_overflow() const;
   // The array eval's first call, and first after reset_arch (src/dispatch.cpp).
   [[gnu::cold]] void eval_out_of_line(const float* t, float* out, std::size_t count,
                                       Variant variant, Normalization normalization) const noexcept;
