@@ -1,0 +1,43 @@
+// kutlog/detail/lobe_dispatch.hpp: the per-arch tables of lobe loops that Lobe's inline array
+// eval reads (filled by src/arch/, chosen by src/dispatch.cpp).
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+
+#include "kutlog/api.hpp"
+#include "kutlog/detail/lobe_kernel.hpp"
+
+KUTLOG_API_BEGIN
+namespace kutlog {
+
+namespace detail {
+// The array loops of one arch's lobe kernels, by slot: for the polynomial form of each degree
+// up to kMaxUnrolledDegree, one per finish (plain, split, compensated: simd::LobeFinish), then
+// plain and split without the clamp (LobeKernel::clamped; compensated kernels keep it),
+// unrolled and testing no flag; in the last slot, one for any kernel. A Lobe computes its
+// kernels' slots at setup, so that a call picks its loop with one load. (FMA-less archs are
+// never given a compensated kernel: Lobe keeps those for Arithmetic::fused.) Filled per arch
+// by src/arch/array_kernels.hpp; here because Lobe's array eval reads it inline.
+using LobeArrayKernel = void (*)(const LobeKernel&, const float*, float*, std::size_t);
+struct LobeArrayKernels {
+  static constexpr int kMaxUnrolledDegree = 16;
+  static constexpr int kSlotsPerDegree = 5;
+  static constexpr int kSlots = kSlotsPerDegree * (kMaxUnrolledDegree + 1) + 1;
+  bool fused_fma;  // which of a Lobe's kernels this arch runs
+  LobeArrayKernel by_slot[kSlots];
+  static constexpr int slot_of(const LobeKernel& kernel) {
+    if (kernel.form != LobeKernel::Form::polynomial || kernel.degree > kMaxUnrolledDegree)
+      return kSlots - 1;
+    const int finish = kernel.compensated ? 2 : kernel.scale_lo != 0 ? 1 : 0;
+    return kSlotsPerDegree * kernel.degree + (kernel.clamped || finish == 2 ? finish : 3 + finish);
+  }
+  LobeArrayKernel of(const LobeKernel& kernel) const { return by_slot[slot_of(kernel)]; }
+};
+// The active arch's loops (src/dispatch.cpp): null before the first array call and after
+// reset_arch; stored with release, loaded with acquire (the tables are built on first use).
+extern std::atomic<const LobeArrayKernels*> active_lobe_loops;
+}  // namespace detail
+
+}  // namespace kutlog
+KUTLOG_API_END
