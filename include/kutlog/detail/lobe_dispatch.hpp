@@ -12,13 +12,7 @@ KUTLOG_API_BEGIN
 namespace kutlog {
 
 namespace detail {
-// The array loops of one arch's lobe kernels, by slot: for the polynomial form of each degree
-// up to kMaxUnrolledDegree, one per finish (plain, split, compensated: simd::LobeFinish), then
-// plain and split without the clamp (LobeKernel::clamped; compensated kernels keep it),
-// unrolled and testing no flag; in the last slot, one for any kernel. A Lobe computes its
-// kernels' slots at setup, so that a call picks its loop with one load. (FMA-less archs are
-// never given a compensated kernel: Lobe keeps those for Arithmetic::fused.) Filled per arch
-// by src/arch/array_kernels.hpp; here because Lobe's array eval reads it inline.
+// One arch's lobe loops, by slot: per degree and finish, unrolled; the last for any kernel.
 using LobeArrayKernel = void (*)(const LobeKernel&, const float*, float*, std::size_t);
 struct LobeArrayKernels {
   static constexpr int kMaxUnrolledDegree = 16;
@@ -34,8 +28,7 @@ struct LobeArrayKernels {
   }
   LobeArrayKernel of(const LobeKernel& kernel) const { return by_slot[slot_of(kernel)]; }
 };
-// The active arch's loops (src/dispatch.cpp): null before the first array call and after
-// reset_arch; stored with release, loaded with acquire (the tables are built on first use).
+// The active arch's loops; null until the first array call (src/dispatch.cpp).
 extern std::atomic<const LobeArrayKernels*> active_lobe_loops;
 }  // namespace detail
 

@@ -1,6 +1,5 @@
-// kutlog/detail/lobe_kernel.hpp: what the kernels need of one material, precomputed by
-// Lobe, PerLaneLobe and PowerPoly (kutlog/lobe.hpp), with the scalar evaluators; plain data,
-// read by kutlog/simd/lobe.hpp and the array kernels.
+// kutlog/detail/lobe_kernel.hpp: what the kernels need of one material, precomputed by the
+// classes of kutlog/lobe.hpp, and the scalar evaluators. Method: docs/design.md.
 #pragma once
 
 #include <algorithm>
@@ -14,13 +13,11 @@
 KUTLOG_API_BEGIN
 namespace kutlog {
 
-// What a kernel needs of one lobe, precomputed: F(t) = scale * P(w), w = 1 - min(t, 1), zero
-// where t <= t_cut. Plain data, for kutlog/simd/lobe.hpp and the scalar path below.
+// F(t) = scale * P(w), w = 1 - min(t, 1), zero where t <= t_cut.
 struct LobeKernel {
   static constexpr int kMaxDegree = 24;
   enum class Form : std::uint8_t {
-    polynomial,  // P = 1 - w q(s), s = center_t - min(t, 1); SIMD: q in float lanes, scale
-                 // split in scale_f + scale_lo
+    polynomial,  // P = 1 - w q(s), s = center_t - min(t, 1); SIMD: q in float lanes
     base_power,  // P = (1 - w q(w))^k; SIMD: q and the power in double lanes
   };
   Form form = Form::polynomial;
@@ -29,50 +26,32 @@ struct LobeKernel {
   float t_cut = 0;
   float center_t = 1;  // polynomial: q's powers are of center_t - t; center_t ~ cos(gran)
   float scale_f = 1;
-  // scale - scale_f, as a float: where it is not 0 (normalized lobes), the SIMD polynomial form
-  // adds it to - w q before the peak, scale_f + (scale_lo - w q), so that scale_f's rounding
-  // does not count whole where the output is in a lower binade than the peak.
+  // scale - scale_f: added before the peak, so that scale_f's rounding does not count whole.
   float scale_lo = 0;
-  // SIMD polynomial form with FMA only: q's last Horner step, c_0 + s r_1, kept exact as a pair
-  // (two_product, two_sum), and - w q applied to both halves before scale_f is added.
-  // Its rounding, about one ulp of q, is what keeps a normalized lobe's epicenter from a
-  // certified 2 ULP when its output sits a binade below the peak.
+  // FMA only: q's last Horner step kept exact as a pair (for a 2 ULP normalized epicenter).
   bool compensated = false;
-  // SIMD polynomial form: whether the output is clamped to [0, scale_f]. The setup drops the
-  // clamp (two of about fifteen operations) where it proves the output within without it:
-  // q computed >= 0 keeps scale - w q at most the peak, and t_cut is raised to the last float
-  // where F is below the kernel's certified error, past which the output cannot be negative
-  // (at or below it, 0 is within the promise).
+  // Whether the output is clamped to [0, scale_f]; dropped where the setup proves it needless.
   bool clamped = true;
   double scale_d = 1;
   std::array<float, kMaxDegree + 1> q_f{};   // SIMD polynomial form, times scale
   std::array<double, kMaxDegree + 1> q_d{};  // base_power form; scalar: both forms, times scale
 
-  // The scalar path, in double: the value before its one rounding to float (meaningful for
-  // t > t_cut; finite elsewhere in [-1, 1], NaN for NaN). Always inlined, as evaluate: GCC
-  // would call them for their size, and the call costs a fragment loop a fifth of its time.
+  // The scalar path's value before its rounding. Always inlined, as evaluate: GCC would call
+  // them for their size.
   [[gnu::always_inline]] double unrounded(float t) const noexcept {
     const double t_capped = t < 1.0f ? double(t) : 1.0, w = 1.0 - t_capped;  // NaN kept
     if (form == Form::base_power)
       return with_q(w, [&](double q) { return scale_d * base_power(1.0 - w * q); });
     return with_q(double(center_t) - t_capped, [&](double q) { return scale_d - w * q; });
   }
-  // F(t) by the scalar path: 0 at or below t_cut, NaN for NaN, else unrounded(t) rounded to
-  // float and clamped to [0, scale_f]. A branch, not a select: past the cut the polynomial's
-  // tiny or meaningless values would cost a select every call (subnormal roundings included).
+  // A branch, not a select: past the cut the polynomial's values would cost one every call.
   [[gnu::always_inline]] float evaluate(float t) const noexcept {
     if (!(t > t_cut)) return t == t ? 0.0f : t;
-    // Past the cut t is a number and so is the value: min and max clamp in one instruction each.
     return std::min(std::max(float(unrounded(t)), 0.0f), scale_f);
   }
 
  private:
-  // finish(q(x)), by Estrin's scheme: q's lower half plus x^(2^j) times its upper half, down
-  // to single coefficients, so that a call's chain of dependent operations is log2 of the
-  // degree deep, not the degree (a fragment loop's calls overlap in the CPU only as far as
-  // its reorder buffer reaches). Unrolled for
-  // the degrees the setup fits (at most 16 for the polynomial form, fewer for the base).
-  // src/lobe_bound.cpp bounds the roundings of this tree.
+  // finish(q(x)) by Estrin's scheme, a chain log2 of the degree deep (src/lobe_bound.cpp).
   template <class Finish>
   [[gnu::always_inline]] double with_q(double x, Finish finish) const {
     switch (degree) {
@@ -102,8 +81,7 @@ struct LobeKernel {
       }
     }
   }
-  // The sum of q_d[kFirst + i] x^i over i < kCount: the lowest bit_floor(kCount - 1) terms plus
-  // x to that power (x squared so many times) times the rest.
+  // The sum of q_d[kFirst + i] x^i over i < kCount.
   template <int kFirst, int kCount>
   [[gnu::always_inline]] double estrin(double x) const {
     if constexpr (kCount == 1) {
@@ -115,7 +93,6 @@ struct LobeKernel {
       return estrin<kFirst, kLow>(x) + power * estrin<kFirst + kLow, kCount - kLow>(x);
     }
   }
-  // base^k by squaring, unrolled for the small k the scalar setup prefers this form for.
   [[gnu::always_inline]] double base_power(double base) const {
     const double square = base * base;
     switch (k) {
@@ -134,10 +111,8 @@ struct LobeKernel {
   }
 };
 
-// What the per-lane kernel needs of one material, precomputed (kutlog/simd/lobe.hpp). With
-// y = 1/n: c^2 = n H(y - y_center), coef = n K(y - y_center); theta^2 = acos(t)^2 = w G(w),
-// w = 1 - t; v = c^2 theta^2 and F = (1 - v R(v - v_center))^k, 0 for v >= v_cut = (pi/2)^2,
-// the power in double lanes.
+// PerLaneLobe's: c^2 = n H(1/n - y_center), coef = n K(.), acos(t)^2 = w G(w), v = c^2 acos(t)^2
+// and F = (1 - v R(v - v_center))^k.
 struct PerLaneKernel {
   static constexpr int kMaxDegree = 20;
   using Coefficients = std::array<float, kMaxDegree + 1>;
@@ -145,8 +120,7 @@ struct PerLaneKernel {
   int k = 1, h_degree = 0, k_degree = 0, g_degree = 0, r_degree = 0;
   Coefficients h{}, coef_k{}, g{}, r{};
 
-  // F(t; n), or coef(n) F(t; n), for one fragment in double precision, rounded once to float:
-  // the SIMD kernel's formulas (kutlog/simd/lobe.hpp), without its float roundings.
+  // The SIMD kernel's formulas in double, rounded once.
   float evaluate(float t, float n, bool normalized) const noexcept {
     if (t != t || n != n) return t + n;  // NaN
     const double n_clamped = double(n < n_min ? n_min : n > n_max ? n_max : n);
@@ -170,9 +144,7 @@ struct PerLaneKernel {
   }
 };
 
-// What the polynomial power needs for one exponent, precomputed (kutlog/simd/lobe.hpp): with
-// x = t - 1 (or, where decomposed, t = 2^e (1 + x), 1 + x in [sqrt(1/2), sqrt(2))),
-// y = n log2 t = x L(x) (+ n e), then scale 2^y = 2^round(y) E(y - round(y)).
+// PowerPoly's: y = n log2 t = x L(x) (+ n e), scale 2^y = 2^round(y) E(y - round(y)).
 struct PowerPolyKernel {
   static constexpr int kMaxLogDegree = 12;
   static constexpr int kPreciseExpDegree = 6, kFastExpDegree = 4;  // of E, by variant
