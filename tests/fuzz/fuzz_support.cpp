@@ -269,15 +269,14 @@ Range lobe_range(const LobeUnderTest& lobe, Variant variant, Normalization norma
 }
 
 bool product_within(float out, Range lobe, double factor_lo, double factor_hi) {
-  // No information: the reference's coef is infinite (its integral underflows near n = 1e38).
+  // No information: an unbounded range.
   if (lobe.lo == -INFINITY && lobe.hi == INFINITY) return true;
   if (std::isinf(factor_hi)) {
     // value * inf: inf for a positive value, NaN for 0, -inf for a negative one.
     if (std::isnan(out)) return lobe.lo <= 0 && lobe.hi >= 0;
     return std::isinf(out) && (out > 0 ? lobe.hi > 0 : lobe.lo < 0);
   }
-  // The extremes of value * factor; inf * 0 (a normalized lobe whose coef overflows float,
-  // where N.L <= 0) is NaN.
+  // The extremes of value * factor; inf * 0 is NaN.
   double lo = INFINITY, hi = -INFINITY;
   bool nan_possible = false;
   for (double value : {lobe.lo, lobe.hi})
