@@ -11,7 +11,8 @@ namespace kutlog::detail {
 bool cpu_has_features(std::string_view features);
 
 // Throws std::runtime_error if this CPU runs none of the compiled archs (src/dispatch.cpp). The
-// constructors of Lobe, PerLaneLobe and PowerPoly call it, so that their noexcept evals can run.
+// constructors of Lobe, PerLaneLobe, PowerPoly and LobeSampler call it, so that their noexcept
+// array calls always find an arch.
 void require_runnable_arch();
 
 }  // namespace kutlog::detail

@@ -281,11 +281,11 @@ void schlick(const float* t, float* out, std::size_t count, float n) {
 }
 
 void LobeSampler::sample(const float* u1, const float* u2, DirectionSamples out,
-                         std::size_t count) const {
+                         std::size_t count) const noexcept {
   active_table().sample_lobe(kernel_, u1, u2, out, count);
 }
 
-SampledDirection LobeSampler::sample(float u1, float u2) const {
+SampledDirection LobeSampler::sample(float u1, float u2) const noexcept {
   return active_table().sample_one(kernel_, u1, u2);
 }
 

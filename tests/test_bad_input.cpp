@@ -15,6 +15,7 @@
 #include "kutlog/lobe.hpp"
 #include "kutlog/math.hpp"
 #include "kutlog/reference.hpp"
+#include "kutlog/sampling.hpp"
 #include "kutlog/shade.hpp"
 #include "test_archs.hpp"
 
@@ -44,6 +45,7 @@ TEST(BadParameters, LobeNamesEachInvalidParameterAndItsRange) {
 const Lobe& some_lobe() noexcept;
 const PerLaneLobe& some_per_lane_lobe() noexcept;
 const PowerPoly& some_power_poly() noexcept;
+const LobeSampler& some_sampler() noexcept;
 float* some_floats() noexcept;
 static_assert(noexcept(some_lobe().eval(0.5f)));
 static_assert(noexcept(some_lobe().eval(0.5f, Variant::fast, Normalization::exact_coef)));
@@ -54,6 +56,9 @@ static_assert(noexcept(some_lobe().kernel(Variant::precise, Normalization::exact
 static_assert(noexcept(some_per_lane_lobe().eval(0.5f, 10.0f)));
 static_assert(noexcept(some_per_lane_lobe().eval(some_floats(), some_floats(), some_floats(), 1)));
 static_assert(noexcept(some_power_poly().eval(some_floats(), some_floats(), 1)));
+static_assert(noexcept(some_sampler().sample(0.5f, 0.5f)));
+static_assert(noexcept(some_sampler().sample(
+    some_floats(), some_floats(), {some_floats(), some_floats(), some_floats(), some_floats()}, 1)));
 
 TEST(BadParameters, PerLaneLobeNamesEachInvalidParameterAndItsRange) {
   for (double n : {0.0, -1.0, kNaN, kInf}) {

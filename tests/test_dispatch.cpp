@@ -20,6 +20,7 @@
 #include "kutlog/accuracy.hpp"
 #include "kutlog/dispatch.hpp"
 #include "kutlog/lobe.hpp"
+#include "kutlog/sampling.hpp"
 #include "kutlog/math.hpp"
 #include "forced_arch_run.hpp"
 
@@ -162,6 +163,8 @@ TEST(DispatchUnderEnvironment, NoSupportedArchIsAClearError) {
   expect_runtime_error_saying([] { Lobe(100, 3, 0.5); }, "lacks " + kBaselineName);
   expect_runtime_error_saying([] { PerLaneLobe(10, 100, 3, 0.5); }, "lacks " + kBaselineName);
   expect_runtime_error_saying([] { PowerPoly(100); }, "lacks " + kBaselineName);
+  expect_runtime_error_saying([] { LobeSampler(100, 3, 0.5, LobeUse::phong); },
+                              "lacks " + kBaselineName);
 }
 
 // KUTLOG_CPU_HIDE=avx1024: a name kutlog does not know is ignored and reported.

@@ -82,7 +82,8 @@ struct SampledDirection {
 
 class LobeSampler {
  public:
-  // Throws std::invalid_argument naming the parameter and its range.
+  // std::invalid_argument naming the parameter and its range; std::runtime_error if the CPU
+  // runs no compiled arch.
   LobeSampler(double n, int k, double Q, LobeUse use);
   template <class N, class K, class Anchor>
     requires(!std::is_integral_v<K>)
@@ -97,10 +98,11 @@ class LobeSampler {
   double fit_error() const { return fit_error_; }
   const SamplerKernel& kernel() const { return kernel_; }
 
-  void sample(const float* u1, const float* u2, DirectionSamples out, std::size_t count) const;
+  void sample(const float* u1, const float* u2, DirectionSamples out,
+              std::size_t count) const noexcept;
 
   // One sample, in double rounded once, with the arrays' contract.
-  SampledDirection sample(float u1, float u2) const;
+  SampledDirection sample(float u1, float u2) const noexcept;
   // Floats only: a double u1 just below 1 would round to 1 without a word.
   template <class U1, class U2>
     requires(!std::is_same_v<U1, float> || !std::is_same_v<U2, float>)
