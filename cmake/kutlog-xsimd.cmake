@@ -1,7 +1,7 @@
 # Finds xsimd 8.1. Debian 12's xsimd package lists `xtl` among the link libraries of its
 # imported target without depending on it, and xtl is optional for xsimd: a consumer that
 # links `xsimd` then fails with "cannot find -lxtl". Drop that entry when no xtl target exists.
-# Used by kutlog's own build and by its installed package config.
+# Used by kutlog's own build only: the installed package does not touch the xsimd target.
 include(CMakeFindDependencyMacro)
 find_dependency(xsimd 8.1)
 if(TARGET xsimd AND NOT TARGET xtl)

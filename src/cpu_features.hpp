@@ -10,4 +10,9 @@ namespace kutlog::detail {
 // registers they use. Detected once; false for a feature that is not known.
 bool cpu_has_features(std::string_view features);
 
+// Throws std::runtime_error if this CPU runs none of the compiled archs (src/dispatch.cpp). The
+// constructors of Lobe, PerLaneLobe, PowerPoly and LobeSampler call it, so that their noexcept
+// array calls always find an arch.
+void require_runnable_arch();
+
 }  // namespace kutlog::detail

@@ -5,7 +5,9 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -41,43 +43,67 @@ constexpr Arch kBaselineArch = kCompiledArchs.back();
 
 using ArchSupport = std::array<bool, kCompiledArchs.size()>;
 
-// KUTLOG_CPU_HIDE=avx512[,avx2...] makes kutlog treat this CPU as lacking those archs and
-// every arch ranked above them (for avx2, avx512 too), so that the fallbacks and the
-// unsupported-arch errors can be tested on a machine that has everything (glibc's hwcaps
-// tunables do the same for glibc).
-ArchSupport hide_archs_named_in_environment(ArchSupport support) {
-  const char* hidden = std::getenv("KUTLOG_CPU_HIDE");
-  if (!hidden) return support;
-  std::string_view names = hidden;
-  while (!names.empty()) {
-    const std::size_t comma = names.find(',');
-    Arch arch;
-    try {
-      arch = parse_arch(names.substr(0, comma));
-    } catch (const std::invalid_argument& error) {
-      throw std::runtime_error(std::string("kutlog: KUTLOG_CPU_HIDE: ") + error.what());
-    }
-    for (std::size_t above = 0; above <= static_cast<std::size_t>(arch); ++above)
-      support[above] = false;
-    names = comma == std::string_view::npos ? std::string_view() : names.substr(comma + 1);
-  }
-  return support;
-}
-
-const ArchSupport& arch_support() {
-  static const ArchSupport support = [] {
-    ArchSupport detected{};
-    for (Arch arch : kCompiledArchs)
-      detected[static_cast<std::size_t>(arch)] = detail::cpu_has_features(entry(arch).cpu_features);
-    return hide_archs_named_in_environment(detected);
-  }();
-  return support;
-}
-
 std::string name_list(const auto& archs) {
   std::string names;
   for (Arch arch : archs) names += (names.empty() ? "" : ", ") + std::string(arch_name(arch));
   return names.empty() ? "none" : names;
+}
+
+std::optional<Arch> find_arch(std::string_view name) {
+  for (Arch arch : kCompiledArchs)
+    if (name == arch_name(arch)) return arch;
+  return std::nullopt;
+}
+
+// source: "" for parse_arch, or the environment variable that gave the name.
+std::string unknown_arch_message(std::string_view name, std::string_view source = "") {
+  return "kutlog: " + std::string(source) + "unknown arch '" + std::string(name) +
+         "'; valid: " + name_list(kCompiledArchs);
+}
+
+// What this CPU runs, and what was wrong with the environment variables that steer the choice:
+// a bad name is ignored, reported by arch_environment_error() and once on stderr.
+struct CpuView {
+  ArchSupport support{};
+  std::string environment_error;
+};
+
+// KUTLOG_CPU_HIDE=avx512[,avx2...] makes kutlog treat this CPU as lacking those archs and
+// every arch ranked above them (for avx2, avx512 too), so that the fallbacks and the
+// unsupported-arch errors can be tested on a machine that has everything (glibc's hwcaps
+// tunables do the same for glibc).
+void hide_archs_named_in_environment(CpuView& view) {
+  const char* hidden = std::getenv("KUTLOG_CPU_HIDE");
+  if (!hidden) return;
+  std::string_view names = hidden;
+  while (!names.empty()) {
+    const std::size_t comma = names.find(',');
+    const std::string_view name = names.substr(0, comma);
+    if (const std::optional<Arch> arch = find_arch(name)) {
+      for (std::size_t above = 0; above <= static_cast<std::size_t>(*arch); ++above)
+        view.support[above] = false;
+    } else {
+      view.environment_error = unknown_arch_message(name, "KUTLOG_CPU_HIDE: ");
+    }
+    names = comma == std::string_view::npos ? std::string_view() : names.substr(comma + 1);
+  }
+}
+
+void report_environment_error(const std::string& error) {
+  if (!error.empty()) std::fprintf(stderr, "%s (ignored)\n", error.c_str());
+}
+
+const CpuView& cpu_view() {
+  static const CpuView view = [] {
+    CpuView detected;
+    for (Arch arch : kCompiledArchs)
+      detected.support[static_cast<std::size_t>(arch)] =
+          detail::cpu_has_features(entry(arch).cpu_features);
+    hide_archs_named_in_environment(detected);
+    report_environment_error(detected.environment_error);
+    return detected;
+  }();
+  return view;
 }
 
 void require_supported(Arch arch, const char* who) {
@@ -88,28 +114,32 @@ void require_supported(Arch arch, const char* who) {
                              name_list(supported_archs()) + ")");
 }
 
-// The automatic choice: KUTLOG_ARCH if set, else the best supported arch. Computed once
-// (a function-local static is initialized thread-safely); if it throws, the next use retries.
-Arch automatic_arch() {
-  static const Arch arch = [] {
-    if (const char* forced = std::getenv("KUTLOG_ARCH"); forced && *forced) {
-      Arch named;
-      try {
-        named = parse_arch(forced);
-      } catch (const std::invalid_argument& error) {
-        throw std::runtime_error(std::string("kutlog: KUTLOG_ARCH: ") + error.what());
-      }
-      require_supported(named, "KUTLOG_ARCH names");
-      return named;
-    }
+// The automatic choice: KUTLOG_ARCH if it names a supported arch, else the best supported
+// arch (none when the CPU lacks the baseline). Computed once, thread-safely.
+struct AutomaticChoice {
+  std::optional<Arch> arch;
+  std::string environment_error;
+};
+const AutomaticChoice& automatic_choice() {
+  static const AutomaticChoice choice = [] {
+    AutomaticChoice chosen;
     const std::vector<Arch> archs = supported_archs();
-    if (archs.empty())
-      throw std::runtime_error("kutlog: this CPU lacks " + std::string(arch_name(kBaselineArch)) +
-                               ", kutlog's baseline arch (compiled: " +
-                               name_list(kCompiledArchs) + ")");
-    return archs.front();
+    if (!archs.empty()) chosen.arch = archs.front();
+    const char* forced = std::getenv("KUTLOG_ARCH");
+    if (!forced || !*forced) return chosen;
+    const std::optional<Arch> named = find_arch(forced);
+    if (!named)
+      chosen.environment_error = unknown_arch_message(forced, "KUTLOG_ARCH: ");
+    else if (!arch_supported(*named))
+      chosen.environment_error = "kutlog: KUTLOG_ARCH names arch " + std::string(forced) +
+                                 ", not supported by this machine (supported: " +
+                                 name_list(archs) + ")";
+    else
+      chosen.arch = named;
+    report_environment_error(chosen.environment_error);
+    return chosen;
   }();
-  return arch;
+  return choice;
 }
 
 constexpr int kNotForced = -1;
@@ -147,13 +177,11 @@ std::atomic<const detail::LobeArrayKernels*> detail::active_lobe_loops{nullptr};
 std::string_view arch_name(Arch arch) { return entry(arch).name; }
 
 Arch parse_arch(std::string_view name) {
-  for (Arch arch : kCompiledArchs)
-    if (name == arch_name(arch)) return arch;
-  throw std::invalid_argument("kutlog: unknown arch '" + std::string(name) +
-                              "'; valid: " + name_list(kCompiledArchs));
+  if (const std::optional<Arch> arch = find_arch(name)) return *arch;
+  throw std::invalid_argument(unknown_arch_message(name));
 }
 
-bool arch_supported(Arch arch) { return arch_support()[static_cast<std::size_t>(arch)]; }
+bool arch_supported(Arch arch) { return cpu_view().support[static_cast<std::size_t>(arch)]; }
 
 std::vector<Arch> supported_archs() {
   std::vector<Arch> archs;
@@ -164,7 +192,22 @@ std::vector<Arch> supported_archs() {
 
 Arch active_arch() {
   const int forced = forced_arch.load(std::memory_order_relaxed);
-  return forced == kNotForced ? automatic_arch() : static_cast<Arch>(forced);
+  if (forced != kNotForced) return static_cast<Arch>(forced);
+  const std::optional<Arch> automatic = automatic_choice().arch;
+  if (!automatic)
+    throw std::runtime_error("kutlog: this CPU lacks " + std::string(arch_name(kBaselineArch)) +
+                             ", kutlog's baseline arch (compiled: " + name_list(kCompiledArchs) +
+                             ")");
+  return *automatic;
+}
+
+void detail::require_runnable_arch() { (void)active_arch(); }
+
+std::string arch_environment_error() {
+  const std::string& hide_error = cpu_view().environment_error;
+  const std::string& arch_error = automatic_choice().environment_error;
+  return hide_error.empty() || arch_error.empty() ? hide_error + arch_error
+                                                  : hide_error + "; " + arch_error;
 }
 
 void force_arch(Arch arch) {
@@ -211,17 +254,17 @@ void pow_u10(const float* x, float y, float* out, std::size_t count) {
 }  // namespace math
 
 void Lobe::eval_out_of_line(const float* t, float* out, std::size_t count, Variant variant,
-                            Normalization normalization) const {
+                            Normalization normalization) const noexcept {
   const detail::KernelTable& table = active_table();
   const LobeKernel& chosen = kernel(variant, normalization, table.fused_fma);
   table.of(chosen)(chosen, t, out, count);
 }
 void PerLaneLobe::eval(const float* t, const float* n, float* out, std::size_t count,
-                       Normalization normalization) const {
+                       Normalization normalization) const noexcept {
   active_table().kutlog_per_lane(kernel_, normalization == Normalization::exact_coef, t, n, out,
                                  count);
 }
-void PowerPoly::eval(const float* t, float* out, std::size_t count) const {
+void PowerPoly::eval(const float* t, float* out, std::size_t count) const noexcept {
   active_table().power_poly(kernel_, t, out, count);
 }
 void blinn_phong_xsimd(const float* t, float* out, std::size_t count, float n, float scale) {
@@ -238,11 +281,11 @@ void schlick(const float* t, float* out, std::size_t count, float n) {
 }
 
 void LobeSampler::sample(const float* u1, const float* u2, DirectionSamples out,
-                         std::size_t count) const {
+                         std::size_t count) const noexcept {
   active_table().sample_lobe(kernel_, u1, u2, out, count);
 }
 
-SampledDirection LobeSampler::sample(float u1, float u2) const {
+SampledDirection LobeSampler::sample(float u1, float u2) const noexcept {
   return active_table().sample_one(kernel_, u1, u2);
 }
 

@@ -4,6 +4,7 @@
 #include "kutlog/lobe.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <bit>
 #include <cmath>
 #include <functional>
@@ -15,6 +16,7 @@
 
 #include "kutlog/reference.hpp"
 #include "arch/kernel_table.hpp"
+#include "cpu_features.hpp"
 #include "epicenter_check.hpp"
 #include "lobe_bound.hpp"
 #include "lobe_cut.hpp"
@@ -266,6 +268,20 @@ CertifiedKernel fit_kernel(const ref::KutlogLobe& reference, const detail::LobeS
                            std::to_string(reference.Q()) + ") meets the bound of its variant");
 }
 
+[[noreturn]] void throw_coef_overflow(double n, int k, double Q, double coef) {
+  // coef grows like n for large n: the largest n whose coef fits a float, from coef at 1e30.
+  constexpr double kLargeN = 1e30;
+  const double n_limit =
+      kLargeN * (std::numeric_limits<float>::max() / ref::coef_exact(kLargeN, k, Q));
+  char message[320];
+  std::snprintf(message, sizeof message,
+                "kutlog: Lobe(n = %g, k = %d, Q = %g): n is out of range: its exact coef %g "
+                "exceeds FLT_MAX; for k = %d and Q = %g, n must be at most about %.3g "
+                "(coef <= FLT_MAX: normalized kernels compute in float)",
+                n, k, Q, coef, k, Q, n_limit);
+  throw std::invalid_argument(message);
+}
+
 }  // namespace
 
 Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
@@ -273,6 +289,9 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
   c_ = reference.c();
   cutoff_angle_ = reference.cutoff_angle();
   coef_exact_ = reference.coef_exact();
+  if (!(coef_exact_ <= std::numeric_limits<float>::max()))
+    throw_coef_overflow(n, k, Q, coef_exact_);
+  detail::require_runnable_arch();
   const double limit = reference.integration_limit();
   const double half_sine = std::sin(0.5 * limit);
   const double w_max = 2 * half_sine * half_sine;  // 1 - cos(min(gran, pi/2))
@@ -285,11 +304,9 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
     if (!base) base.emplace(shape, 1, w_max, 0.0);
     return *base;
   };
-  coef_fits_float_ = coef_exact_ <= std::numeric_limits<float>::max();
   for (Variant variant : {Variant::precise, Variant::fast})
     for (Normalization normalization : {Normalization::none, Normalization::exact_coef})
       for (Arithmetic arithmetic : {Arithmetic::unfused, Arithmetic::fused, Arithmetic::scalar}) {
-        if (normalization == Normalization::exact_coef && !coef_fits_float_) continue;
         const Target& promised = variant == Variant::fast ? kFastTarget : kPreciseTarget;
         const double factor = detail::lobe_target_factor_for_tests.load(std::memory_order_relaxed);
         const Target target{promised.abs_error * factor, promised.epicenter_ulp * factor};
@@ -302,15 +319,6 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
         certificates_[index] = {fitted.certified.abs_error, fitted.certified.epicenter_ulp};
         array_slots_[index] = std::uint8_t(detail::LobeArrayKernels::slot_of(kernels_[index]));
       }
-}
-
-void Lobe::throw_coef_overflow() const {
-  // coef grows like n: it passes FLT_MAX from about n = 10^38 on, by k and Q.
-  throw std::invalid_argument(
-      "kutlog: Normalization::exact_coef is invalid for Lobe(n = " + std::to_string(n_) +
-      ", k = " + std::to_string(k_) + ", Q = " + std::to_string(Q_) + "): its coef " +
-      std::to_string(coef_exact_) + " exceeds FLT_MAX; normalized lobes need coef <= FLT_MAX "
-      "(Normalization::none works for every n)");
 }
 
 }  // namespace kutlog

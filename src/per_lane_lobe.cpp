@@ -11,6 +11,7 @@
 
 #include "kutlog/lobe.hpp"
 #include "kutlog/reference.hpp"
+#include "cpu_features.hpp"
 #include "lobe_cut.hpp"
 #include "polynomial_fit.hpp"
 
@@ -107,6 +108,7 @@ PerLaneLobe::PerLaneLobe(double n_min, double n_max, int k, double Q) : k_(k), Q
   ref::validate_exponent(n_min, "n_min");
   ref::validate_exponent(n_max, "n_max");
   ref::validate_parameters(n_min, k, Q);  // k and Q
+  detail::require_runnable_arch();
   if (!(n_min >= k))
     throw std::invalid_argument("kutlog: n_min = " + std::to_string(n_min) +
                                 " is invalid; a per-lane lobe needs n_min >= k = " +

@@ -10,6 +10,7 @@
 
 #include "kutlog/lobe.hpp"
 #include "kutlog/reference.hpp"
+#include "cpu_features.hpp"
 #include "polynomial_fit.hpp"
 
 namespace kutlog {
@@ -45,6 +46,7 @@ PowerPoly::PowerPoly(double n, Variant variant, double scale) {
   if (!(scale > 0 && scale <= FLT_MAX))
     throw std::invalid_argument("kutlog: scale = " + std::to_string(scale) +
                                 " is invalid; scale must be in (0, FLT_MAX]");
+  detail::require_runnable_arch();
   const double bound = variant == Variant::precise ? 0x1p-22 : 0x1p-16;
   kernel_.n = float(n);
   // Below t_zero, t^n < bound / 2: 0 is within the bound there.

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "cpu_features.hpp"
 #include "polynomial_fit.hpp"
 
 namespace kutlog {
@@ -117,6 +118,7 @@ Fit fit_cells(const ThetaAt& theta_at, double G, SamplerCells layout, int max_de
 LobeSampler::LobeSampler(double n, int k, double Q, LobeUse use)
     : n_(n), Q_(Q), fit_error_(0), use_(use) {
   const ref::PolarAngleDistribution polar(n, k, Q, use);  // validates n, k, Q
+  detail::require_runnable_arch();
   limit_ = polar.limit();
   const double peak = polar.solid_angle_density(0);
   if (!(peak <= FLT_MAX)) {

@@ -1,7 +1,7 @@
 // The article's published tables, reproduced from the reference cell by cell.
 //
 // Each table cell is checked twice:
-// - the library's recomputation (kutlog/article.hpp) against an independent one written here,
+// - the library's recomputation (src/article/article.hpp) against an independent one written here,
 //   in long double and by a different method, at a tolerance derived from the library's own
 //   rounding (the independent value is far more accurate than that tolerance);
 // - the article's printed value against the recomputation at the printed precision (half a
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "kutlog/article.hpp"
+#include "article.hpp"
 #include "kutlog/reference.hpp"
 
 namespace kutlog::article {

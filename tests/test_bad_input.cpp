@@ -15,6 +15,7 @@
 #include "kutlog/lobe.hpp"
 #include "kutlog/math.hpp"
 #include "kutlog/reference.hpp"
+#include "kutlog/sampling.hpp"
 #include "kutlog/shade.hpp"
 #include "test_archs.hpp"
 
@@ -35,7 +36,29 @@ TEST(BadParameters, LobeNamesEachInvalidParameterAndItsRange) {
     expect_invalid([k] { Lobe(10, k, 0.5); }, "k", "integer in [1, 64]");
   for (double Q : {0.0, 1.0, -0.5, 1.5, kNaN, kInf})
     expect_invalid([Q] { Lobe(10, 2, Q); }, "Q", "in (0, 1)");
+  // A coef that no float holds: refused here, so that no normalized eval has to refuse it.
+  for (double n : {1e40, 1e300})
+    expect_invalid([n] { Lobe(n, 2, 0.5); }, "n", "n must be at most about");
 }
+
+// Everything is decided when the lobe is built: no eval can throw.
+const Lobe& some_lobe() noexcept;
+const PerLaneLobe& some_per_lane_lobe() noexcept;
+const PowerPoly& some_power_poly() noexcept;
+const LobeSampler& some_sampler() noexcept;
+float* some_floats() noexcept;
+static_assert(noexcept(some_lobe().eval(0.5f)));
+static_assert(noexcept(some_lobe().eval(0.5f, Variant::fast, Normalization::exact_coef)));
+static_assert(noexcept(some_lobe().eval(some_floats(), some_floats(), 1)));
+static_assert(noexcept(some_lobe().eval(some_floats(), some_floats(), 1, Variant::fast,
+                                        Normalization::exact_coef)));
+static_assert(noexcept(some_lobe().kernel(Variant::precise, Normalization::exact_coef, true)));
+static_assert(noexcept(some_per_lane_lobe().eval(0.5f, 10.0f)));
+static_assert(noexcept(some_per_lane_lobe().eval(some_floats(), some_floats(), some_floats(), 1)));
+static_assert(noexcept(some_power_poly().eval(some_floats(), some_floats(), 1)));
+static_assert(noexcept(some_sampler().sample(0.5f, 0.5f)));
+static_assert(noexcept(some_sampler().sample(
+    some_floats(), some_floats(), {some_floats(), some_floats(), some_floats(), some_floats()}, 1)));
 
 TEST(BadParameters, PerLaneLobeNamesEachInvalidParameterAndItsRange) {
   for (double n : {0.0, -1.0, kNaN, kInf}) {

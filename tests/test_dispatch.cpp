@@ -19,6 +19,8 @@
 #include "common/ulp.hpp"
 #include "kutlog/accuracy.hpp"
 #include "kutlog/dispatch.hpp"
+#include "kutlog/lobe.hpp"
+#include "kutlog/sampling.hpp"
 #include "kutlog/math.hpp"
 #include "forced_arch_run.hpp"
 
@@ -98,36 +100,43 @@ TEST(DispatchUnderEnvironment, KutlogArchEnvironmentVariableSelectsASupportedArc
   EXPECT_EQ(active_arch(), parse_arch(named));
 }
 
-// KUTLOG_ARCH naming an arch the CPU lacks: the first use throws (never an illegal
-// instruction), and so does every later one.
-TEST(DispatchUnderEnvironment, KutlogArchNamingAnUnsupportedArchIsAClearError) {
-  const char* named = std::getenv("KUTLOG_ARCH");
-  if (!named || arch_supported(parse_arch(named))) GTEST_SKIP() << "KUTLOG_ARCH unset or supported";
+// The automatic choice ignoring a bad KUTLOG_ARCH: the best supported arch runs, the array
+// calls work and arch_environment_error() says what was wrong.
+void expect_fallback_reporting(const std::string& words) {
   const std::vector<float> x = sample_inputs();
-  std::vector<float> out(x.size());
+  std::vector<float> out(x.size()), expected(x.size());
   for (int attempt = 0; attempt < 2; ++attempt) {
-    expect_runtime_error_saying([] { active_arch(); }, "KUTLOG_ARCH names arch");
-    expect_runtime_error_saying([&] { math::cos_u10(x.data(), out.data(), x.size()); },
-                                "not supported by this machine");
+    reset_arch();
+    EXPECT_EQ(active_arch(), supported_archs().front());
+    EXPECT_NE(arch_environment_error().find(words), std::string::npos)
+        << arch_environment_error();
+    math::cos_u10(x.data(), out.data(), x.size());
+    {
+      ScopedArch best(supported_archs().front());
+      math::cos_u10(x.data(), expected.data(), x.size());
+    }
+    EXPECT_EQ(out, expected);
   }
 }
 
+// KUTLOG_ARCH naming an arch the CPU lacks: never an illegal instruction, never a throw.
+TEST(DispatchUnderEnvironment, KutlogArchNamingAnUnsupportedArchFallsBackAndIsReported) {
+  const char* named = std::getenv("KUTLOG_ARCH");
+  if (!named || arch_supported(parse_arch(named))) GTEST_SKIP() << "KUTLOG_ARCH unset or supported";
+  expect_fallback_reporting("KUTLOG_ARCH names arch " + std::string(named) +
+                            ", not supported by this machine");
+}
+
 // KUTLOG_ARCH naming an arch of another platform, which this build did not compile (neon64 on
-// x86-64, avx2 on aarch64): every use throws an error that names the archs there are, never
-// runs a kernel of another instruction set.
-TEST(DispatchUnderEnvironment, KutlogArchNamingAnArchNotCompiledIsAClearError) {
+// x86-64, avx2 on aarch64): the message names the archs there are; no kernel of another
+// instruction set runs.
+TEST(DispatchUnderEnvironment, KutlogArchNamingAnArchNotCompiledFallsBackAndIsReported) {
   const char* named = std::getenv("KUTLOG_ARCH");
   const auto compiled = [&](Arch arch) { return named == arch_name(arch); };
   if (!named || std::ranges::any_of(kCompiledArchs, compiled))
     GTEST_SKIP() << "KUTLOG_ARCH unset or compiled";
-  const std::vector<float> x = sample_inputs();
-  std::vector<float> out(x.size());
-  const std::string error = "KUTLOG_ARCH: kutlog: unknown arch '" + std::string(named) +
-                            "'; valid: " + std::string(arch_name(kCompiledArchs.front()));
-  for (int attempt = 0; attempt < 2; ++attempt) {
-    expect_runtime_error_saying([] { active_arch(); }, error);
-    expect_runtime_error_saying([&] { math::cos_u10(x.data(), out.data(), x.size()); }, error);
-  }
+  expect_fallback_reporting("KUTLOG_ARCH: unknown arch '" + std::string(named) +
+                            "'; valid: " + std::string(arch_name(kCompiledArchs.front())));
 }
 
 // The best and the baseline arch of the registry (cmake/KutlogArchs.cmake).
@@ -144,19 +153,35 @@ TEST(DispatchUnderEnvironment, HiddenArchsAreUnsupported) {
   EXPECT_NE(active_arch(), arch);
 }
 
-// KUTLOG_CPU_HIDE=<baseline>: a CPU without the baseline gets an error, not a crash.
+// KUTLOG_CPU_HIDE=<baseline>: a CPU without the baseline gets an error, not a crash, when the
+// arch is asked for or a Lobe is built (so a Lobe's eval never meets it).
 TEST(DispatchUnderEnvironment, NoSupportedArchIsAClearError) {
   const char* hidden = std::getenv("KUTLOG_CPU_HIDE");
   if (!hidden || hidden != kBaselineName) GTEST_SKIP() << "needs KUTLOG_CPU_HIDE=" << kBaselineName;
   EXPECT_TRUE(supported_archs().empty());
   expect_runtime_error_saying([] { active_arch(); }, "lacks " + kBaselineName);
+  expect_runtime_error_saying([] { Lobe(100, 3, 0.5); }, "lacks " + kBaselineName);
+  expect_runtime_error_saying([] { PerLaneLobe(10, 100, 3, 0.5); }, "lacks " + kBaselineName);
+  expect_runtime_error_saying([] { PowerPoly(100); }, "lacks " + kBaselineName);
+  expect_runtime_error_saying([] { LobeSampler(100, 3, 0.5, LobeUse::phong); },
+                              "lacks " + kBaselineName);
 }
 
-// KUTLOG_CPU_HIDE=avx1024: a name kutlog does not know is an error at the first query.
-TEST(DispatchUnderEnvironment, UnknownHiddenArchIsAClearError) {
+// KUTLOG_CPU_HIDE=avx1024: a name kutlog does not know is ignored and reported.
+TEST(DispatchUnderEnvironment, UnknownHiddenArchIsIgnoredAndReported) {
   const char* hidden = std::getenv("KUTLOG_CPU_HIDE");
   if (!hidden || std::string(hidden) != "avx1024") GTEST_SKIP() << "needs KUTLOG_CPU_HIDE=avx1024";
-  expect_runtime_error_saying([] { arch_supported(kBaselineArch); }, "KUTLOG_CPU_HIDE");
+  EXPECT_TRUE(arch_supported(kBaselineArch));
+  EXPECT_NE(arch_environment_error().find("KUTLOG_CPU_HIDE: unknown arch 'avx1024'"),
+            std::string::npos)
+      << arch_environment_error();
+}
+
+// Without the environment variables there is nothing to report.
+TEST(DispatchUnderEnvironment, NothingToReportWithoutTheVariables) {
+  if (std::getenv("KUTLOG_ARCH") || std::getenv("KUTLOG_CPU_HIDE"))
+    GTEST_SKIP() << "KUTLOG_ARCH or KUTLOG_CPU_HIDE set";
+  EXPECT_EQ(arch_environment_error(), "");
 }
 
 // ctest runs each test in its own process, so here the first use of the dispatch happens in

@@ -16,7 +16,7 @@
 
 #include "common/cli.hpp"
 #include "common/table.hpp"
-#include "kutlog/article.hpp"
+#include "article.hpp"
 #include "kutlog/reference.hpp"
 
 namespace {

@@ -1,10 +1,5 @@
-// kutlog/api.hpp: what the library exports.
-//
-// Everything a public header of include/kutlog declares is kutlog's API. Each wraps its
-// declarations in KUTLOG_API_BEGIN / KUTLOG_API_END, which give them default visibility; the
-// shared library is compiled with -fvisibility=hidden (CMake's BUILD_SHARED_LIBS), so that
-// nothing else it contains (the setup's internals, the per-arch kernels) is exported or can
-// clash with a symbol of the program that loads it.
+// kutlog/api.hpp: KUTLOG_API_BEGIN/END give the public headers' declarations default
+// visibility; the shared library hides everything else (-fvisibility=hidden).
 #pragma once
 
 #if defined(__GNUC__) || defined(__clang__)

@@ -1,10 +1,5 @@
-// kutlog/math.hpp: the SIMD math kernels (kutlog/simd/math.hpp) over arrays, dispatched at
-// run time to the best arch (kutlog/dispatch.hpp).
-//
-// Every function takes any count and any alignment; the tail is computed in a full batch
-// through a local buffer, so nothing is read or written outside [0, count). out may equal an
-// input (in place); otherwise the arrays must not overlap. Thread-safe, no allocation.
-// Contracts (domain, bound, special values) are those of the kernel of the same name.
+// kutlog/math.hpp: the kernels of kutlog/simd/math.hpp over arrays, dispatched at run time,
+// with their contracts. Any count and alignment; out may equal an input, else no overlap.
 #pragma once
 
 #include <cstddef>

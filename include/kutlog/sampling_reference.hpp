@@ -1,22 +1,7 @@
-// kutlog/sampling_reference.hpp: importance sampling of the normalized F_kutlog lobe, scalar
-// double precision: the spec the SIMD samplers are to be tested against.
-//
-// Two uses, each with sample (two uniform numbers -> direction and pdf), pdf (direction) and
-// eval (the BRDF), in the local shading frame whose z axis is the normal N:
-//   - microfacet (Blinn): D(wm) = coef F(N.wm), coef = coef_exact(), a distribution of half
-//     vectors wm drawn with pdf(wm) = D(wm) cos(theta_m); the reflected direction
-//     wi = 2 (wo.wm) wm - wo then has pdf(wm) / (4 |wo.wm|);
-//   - phong: directions w around the mirror direction R of wo, drawn with pdf over the sphere
-//     F(R.w) / (2 pi J), J = integral from 0 to G of F(alpha) sin(alpha) d(alpha).
-// The polar angle (from N for microfacet, from R for phong) is drawn by inverting its CDF, a
-// closed form for integer k (KutlogLobe::sine_moment_times_c_squared), with a safeguarded
-// Newton iteration; the azimuth is uniform.
-//
-// Narrow lobes (n up to DBL_MAX, c up to about 1.3e154) keep full relative precision in the
-// lobe's frame: angles are computed as atan2(hypot(w.x, w.y), w.z) from the components, never
-// as acos(w.z). A direction given in the shading frame (phong's pdf and eval, the microfacet's
-// reflected direction) carries the absolute rounding of a unit vector, about 1e-16 rad, so
-// there a lobe narrower than about 1e-7 rad is resolved only as well as the vectors are.
+// kutlog/sampling_reference.hpp: importance sampling of the normalized F_kutlog lobe in
+// double precision, the spec of the SIMD samplers: half vectors (microfacet) and directions
+// about the mirror direction (phong), in the shading frame whose z is the normal. The
+// densities, the inverse CDF and the precision of narrow lobes: docs/api-notes.md.
 #pragma once
 
 #include <array>
@@ -30,46 +15,30 @@ namespace kutlog::ref {
 
 enum class LobeUse { microfacet, phong };
 
-// A sampled direction and its pdf (over solid angle).
 struct DirectionSample {
   Vec3 direction;
   double pdf;
 };
 
-// The polar angle theta of the sampled direction (of wm from N for microfacet, of w from R for
-// phong), with density over theta in [0, G], G = KutlogLobe::integration_limit():
-//   microfacet: F(theta) cos(theta) sin(theta) / Int
-//   phong:      F(theta) sin(theta) / J
+// The polar angle (from N or R) on [0, G]: density F cos sin / Int (microfacet), F sin / J.
 class PolarAngleDistribution {
  public:
-  // Throws std::invalid_argument for an invalid (n, k, Q).
   PolarAngleDistribution(double n, int k, double Q, LobeUse use);
 
   const KutlogLobe& lobe() const { return lobe_; }
   LobeUse use() const { return frequency_ == 2 ? LobeUse::microfacet : LobeUse::phong; }
   double limit() const { return lobe_.integration_limit(); }
 
-  // The density over the sphere of a direction at polar angle theta: coef F cos(theta)
-  // (microfacet), F / (2 pi J) (phong); 0 outside [0, G].
+  // Over the sphere; density() is over theta. 0 outside [0, G].
   double solid_angle_density(double theta) const;
-  // The density of theta itself: 2 pi sin(theta) solid_angle_density(theta).
   double density(double theta) const;
-  // The CDF of theta: 0 below 0, 1 from G. Closed form; its rounding is a few 1e-16 (up to
-  // 2e-15 near 1), and it agrees with quadrature of density() to 1e-11 (tests/test_sampling).
+  // Closed form, within a few 1e-16.
   double cdf(double theta) const;
-  // The theta with cdf(theta) = xi, xi in [0, 1] (std::invalid_argument otherwise): Newton's
-  // iteration on cdf(theta) - xi from a guess interpolated in a table of 64 quantiles, kept
-  // inside the bracket the table gives and shrinks, bisecting whenever a Newton step would
-  // leave it or fails to halve the step before; ends when the step is below 2 ulp of theta or
-  // the CDF is within 8 ulp of xi (its own rounding: steps past it would chase noise).
-  // |cdf(result) - xi| is within the CDF's rounding, whatever n.
+  // Safeguarded Newton from a table of quantiles, to the CDF's own rounding; xi in [0, 1].
   double inverse_cdf(double xi) const;
-  // The same root, from the caller's guess where it lies inside the table's bracket (e.g. the
-  // root of a nearby xi, extrapolated): fewer CDF evaluations when it is close.
+  // The same root, from the caller's guess where it lies inside the table's bracket.
   double inverse_cdf(double xi, double theta_guess) const;
-  // A direction in the distribution's frame (z = N for microfacet, R for phong) and its
-  // solid_angle_density: theta = inverse_cdf(u1), azimuth 2 pi u2; u1, u2 in [0, 1]
-  // (std::invalid_argument otherwise, naming u1 or u2).
+  // theta = inverse_cdf(u1), azimuth 2 pi u2, in the distribution's frame.
   DirectionSample sample(double u1, double u2) const;
 
  private:
@@ -79,44 +48,29 @@ class PolarAngleDistribution {
   KutlogLobe lobe_;
   int frequency_;           // 2: cos sin (microfacet), 1: sin (phong)
   double total_;            // sine_moment_times_c_squared(G, frequency)
-  double density_scale_;    // c^2 frequency / (2 pi total): coef for microfacet, 1/(2 pi J)
+  double density_scale_;    // coef for microfacet, 1/(2 pi J) for phong
   std::array<double, kQuantileCells + 1> quantiles_;  // the theta at cdf = i / 64
 };
 
-// The angle between two unit vectors, 2 atan2(|a - b|, |a + b|): accurate to their rounding
-// at every angle, where acos(a.b) loses half the digits near 0.
+// 2 atan2(|a - b|, |a + b|): accurate near 0, where acos(a.b) is not.
 double angle_between(const Vec3& a, const Vec3& b);
 
 class KutlogMicrofacet {
  public:
-  // Throws std::invalid_argument for an invalid (n, k, Q).
   KutlogMicrofacet(double n, int k, double Q);
 
   const KutlogLobe& lobe() const { return half_vector_.lobe(); }
   const PolarAngleDistribution& half_vector_distribution() const { return half_vector_; }
 
-  // D(wm) = coef_exact F(wm.z); wm a unit vector, 0 below the horizon.
   double D(const Vec3& wm) const;
-  // The pdf of the sampled half vector: D(wm) wm.z.
   double pdf_half_vector(const Vec3& wm) const;
-  // A half vector (z >= 0) from u1 (polar angle) and u2 (azimuth), each in [0, 1]
-  // (std::invalid_argument otherwise, naming u1 or u2).
   DirectionSample sample_half_vector(double u1, double u2) const;
 
-  // The reflected direction wi = 2 (wo.wm) wm - wo for a sampled wm, with pdf
-  // pdf_half_vector(wm) / (4 wo.wm). No sample (as pbrt-v4) where wo.z <= 0, wo.wm <= 0 or wi
-  // falls below the horizon: a renderer would weigh it 0, and near wi = -wo, where
-  // wo.wm -> 0, its pdf has a 1/|wi + wo| singularity. So the pdf integrates to the
-  // probability of a sample, 1 only where no draw fails (a lobe within pi/4 at normal
-  // incidence, within pi/2 - theta_o elsewhere).
+  // wi = 2 (wo.wm) wm - wo; no sample where wo, wm or wi is below the horizon (as pbrt-v4).
   std::optional<DirectionSample> sample(const Vec3& wo, double u1, double u2) const;
-  // sample's second step: wo reflected in the half vector wm drawn by sample_half_vector.
   std::optional<DirectionSample> reflect(const Vec3& wo, const DirectionSample& wm) const;
-  // The density of sample's wi: with wm = (wo + wi) / |wo + wi|, pdf_half_vector(wm) /
-  // (4 wo.wm); 0 unless both are above the horizon.
   double pdf(const Vec3& wo, const Vec3& wi) const;
-  // The BRDF D G / (4 cos(theta_i) cos(theta_o)), G the V-cavity term, no Fresnel (as
-  // albedo_blinn); 0 unless both directions are above the horizon.
+  // D G / (4 cos cos), V-cavity G, no Fresnel (as albedo_blinn).
   double eval(const Vec3& wo, const Vec3& wi) const;
 
  private:
@@ -126,23 +80,18 @@ class KutlogMicrofacet {
 
 class KutlogPhong {
  public:
-  // Throws std::invalid_argument for an invalid (n, k, Q).
   KutlogPhong(double n, int k, double Q);
 
   const KutlogLobe& lobe() const { return lobe_angle_.lobe(); }
   const PolarAngleDistribution& lobe_angle_distribution() const { return lobe_angle_; }
 
-  // In the lobe's frame (z = R): the pdf F(w.z) / (2 pi J) of a unit vector w, and a sample
-  // from u1 (angle from R) and u2 (azimuth) in [0, 1].
   double pdf_in_lobe_frame(const Vec3& w) const;
   DirectionSample sample_in_lobe_frame(double u1, double u2) const;
 
-  // In the shading frame: R = (-wo.x, -wo.y, wo.z). No sample where wo.z <= 0 or the
-  // direction falls below the horizon (as the microfacet's); pdf is pdf_in_lobe_frame about
-  // R above the horizon, 0 below it.
+  // About R = (-wo.x, -wo.y, wo.z); no sample below the horizon.
   std::optional<DirectionSample> sample(const Vec3& wo, double u1, double u2) const;
   double pdf(const Vec3& wo, const Vec3& wi) const;
-  // The BRDF coef_exact F(R.wi) (as albedo_phong); 0 unless both are above the horizon.
+  // coef_exact F(R.wi) (as albedo_phong).
   double eval(const Vec3& wo, const Vec3& wi) const;
 
  private:

@@ -179,6 +179,10 @@ bool LobeParameters::valid() const {
          Q < 1;
 }
 
+bool LobeParameters::lobe_valid() const {
+  return valid() && ref::coef_exact(n, k, Q) <= std::numeric_limits<float>::max();
+}
+
 std::string LobeParameters::text() const {
   char text[160];
   std::snprintf(text, sizeof text, "n=%.17g (%a) k=%d Q=%.17g (%a)", n, n, k, Q, Q);
@@ -226,9 +230,9 @@ const LobeUnderTest* lobe_under_test(const LobeParameters& parameters, const Cal
   static Cache<std::tuple<double, int, double>, LobeUnderTest> lobes;
   const LobeUnderTest* found = nullptr;
   check_constructor(
-      parameters.valid(),
+      parameters.lobe_valid(),
       [&] {
-        if (!parameters.valid()) {  // not cached: it must throw at once
+        if (!parameters.lobe_valid()) {  // not cached: it must throw at once
           const Lobe rejected(parameters.n, parameters.k, parameters.Q);
           return;
         }
@@ -265,15 +269,14 @@ Range lobe_range(const LobeUnderTest& lobe, Variant variant, Normalization norma
 }
 
 bool product_within(float out, Range lobe, double factor_lo, double factor_hi) {
-  // No information: the reference's coef is infinite (its integral underflows near n = 1e38).
+  // No information: an unbounded range.
   if (lobe.lo == -INFINITY && lobe.hi == INFINITY) return true;
   if (std::isinf(factor_hi)) {
     // value * inf: inf for a positive value, NaN for 0, -inf for a negative one.
     if (std::isnan(out)) return lobe.lo <= 0 && lobe.hi >= 0;
     return std::isinf(out) && (out > 0 ? lobe.hi > 0 : lobe.lo < 0);
   }
-  // The extremes of value * factor; inf * 0 (a normalized lobe whose coef overflows float,
-  // where N.L <= 0) is NaN.
+  // The extremes of value * factor; inf * 0 is NaN.
   double lo = INFINITY, hi = -INFINITY;
   bool nan_possible = false;
   for (double value : {lobe.lo, lobe.hi})

@@ -148,6 +148,8 @@ struct LobeParameters {
   // Inside the documented domain (kutlog/reference.hpp): n finite and > 0, k in [1, 64],
   // Q finite and in (0, 1).
   bool valid() const;
+  // Inside Lobe's (kutlog/lobe.hpp): valid() and the exact coef at most FLT_MAX.
+  bool lobe_valid() const;
   std::string text() const;
 };
 // Mostly from tables of typical and extreme values (few distinct lobes, each built once);

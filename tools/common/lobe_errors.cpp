@@ -87,9 +87,6 @@ std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep, LobeEv
   for (Variant variant : kLobeVariants)
     for (Normalization normalization : kLobeNormalizations)
       for (Arithmetic arithmetic : {Arithmetic::unfused, Arithmetic::fused}) {
-        if (normalization == Normalization::exact_coef &&
-            !(lobe.coef_exact() <= std::numeric_limits<float>::max()))
-          continue;
         const std::uint32_t key = order_key(lobe.kernel(variant, normalization, arithmetic).t_cut);
         const auto near = [&](std::uint32_t cut) {
           return std::max(key, cut) - std::min(key, cut) <= kernel_cut_reach / 2;
@@ -129,7 +126,6 @@ std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep, LobeEv
       for (Normalization normalization : kLobeNormalizations) {
         LobeErrors& errors = local[kernel_index++];
         const bool normalized = normalization == Normalization::exact_coef;
-        if (normalized && !(lobe.coef_exact() <= std::numeric_limits<float>::max())) continue;
         const double scale = normalized ? lobe.coef_exact() : 1.0;
         evaluate(lobe, variant, normalization, t.data(), out.data(), t.size());
         for (std::size_t i = 0; i < t.size(); ++i) errors.add(t[i], out[i], scale, expected[i]);

@@ -66,8 +66,7 @@ void evaluate_array(const Lobe& lobe, Variant variant, Normalization normalizati
                     const float* t, float* out, std::size_t count);
 
 // The floats of the sweep through `evaluate`, against the reference (computed once, for the
-// four kernels). Normalized kernels are left out (errors with no inputs) for a lobe whose coef
-// exceeds FLT_MAX, which they reject.
+// four kernels).
 std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep = {},
                                        LobeEvaluator evaluate = evaluate_array,
                                        unsigned threads = 0);

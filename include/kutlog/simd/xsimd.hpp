@@ -1,31 +1,6 @@
-// kutlog/simd/xsimd.hpp: xsimd, as every kutlog header and source includes it, so that an
-// unoptimized GCC build of the AVX-512 kernels compiles.
-//
-// Without optimization (no __OPTIMIZE__: -O0, a Debug build), GCC 12's avx512bwintrin.h makes
-// _mm512_mask_blend_epi8 and _mm512_mask_blend_epi16 macros that cast their operands straight
-// to __v64qi / __v32hi; with optimization they are functions taking __m512i. xsimd 8.1's
-// avx512bw select hands them batches, which convert to __m512i but not to a vector of bytes,
-// in a switch on sizeof(T) whose 8- and 16-bit cases are compiled for every T: no integer
-// select compiles, and xsimd::log and xsimd::pow (blinn_phong_xsimd, the benchmarks) need one.
-// Upstream xsimd fixed the call (xtensor-stack/xsimd#852, after 8.1). Here the two macros
-// become the masked moves, which are functions at every level: blend(k, a, b) takes b where k
-// is set and a elsewhere, as mask_mov(a, k, b) does. This must come before xsimd's headers: a
-// macro expands where xsimd's template is written, not where it is instantiated. Optimized
-// builds (Release, RelWithDebInfo) compile exactly as without this header.
+// kutlog/simd/xsimd.hpp: xsimd, as every kutlog header and source includes it: the portable
+// arch, and xsimd's kernels specialized where xsimd 8.1 gets them wrong (below).
 #pragma once
-
-#if defined(__GNUC__) && !defined(__clang__) && !defined(__OPTIMIZE__) && \
-    (defined(__x86_64__) || defined(__i386__))
-#include <immintrin.h>
-#ifdef _mm512_mask_blend_epi8
-#undef _mm512_mask_blend_epi8
-#define _mm512_mask_blend_epi8(mask, a, b) _mm512_mask_mov_epi8((a), (mask), (b))
-#endif
-#ifdef _mm512_mask_blend_epi16
-#undef _mm512_mask_blend_epi16
-#define _mm512_mask_blend_epi16(mask, a, b) _mm512_mask_mov_epi16((a), (mask), (b))
-#endif
-#endif
 
 // The portable arch declares its kernels before xsimd defines batch (kutlog/simd/portable.hpp).
 #include "kutlog/simd/portable.hpp"
@@ -37,6 +12,44 @@
 #include <xsimd/types/xsimd_batch_constant.hpp>
 #include <xsimd/types/xsimd_traits.hpp>
 #include <xsimd/types/xsimd_api.hpp>
+#endif
+
+// GCC's avx512bwintrin.h, unoptimized (-O0), makes _mm512_mask_blend_epi8 and _epi16 macros
+// that cast their operands to byte vectors, which xsimd 8.1's avx512bw select (written for
+// every integer T) cannot compile (fixed upstream, xtensor-stack/xsimd#852). Explicit
+// specializations, with the masked moves instead, need no particular include order.
+#if XSIMD_WITH_AVX512BW && defined(__GNUC__) && !defined(__clang__) && !defined(__OPTIMIZE__)
+namespace xsimd::kernel {
+namespace kutlog_avx512bw {
+template <class T>
+inline batch<T, avx512bw> select(batch_bool<T, avx512bw> const& cond,
+                                 batch<T, avx512bw> const& true_br,
+                                 batch<T, avx512bw> const& false_br) noexcept {
+  if constexpr (sizeof(T) == 1) return _mm512_mask_mov_epi8(false_br, cond, true_br);
+  else if constexpr (sizeof(T) == 2) return _mm512_mask_mov_epi16(false_br, cond, true_br);
+  else return kernel::select(cond, true_br, false_br, avx512dq{});
+}
+}  // namespace kutlog_avx512bw
+#define KUTLOG_AVX512BW_SELECT(T)                                                             \
+  template <>                                                                                 \
+  inline batch<T, avx512bw> select<avx512bw, T, void>(                                        \
+      batch_bool<T, avx512bw> const& cond, batch<T, avx512bw> const& true_br,                 \
+      batch<T, avx512bw> const& false_br, requires_arch<avx512bw>) noexcept {                 \
+    return kutlog_avx512bw::select(cond, true_br, false_br);                                  \
+  }
+KUTLOG_AVX512BW_SELECT(signed char)
+KUTLOG_AVX512BW_SELECT(unsigned char)
+KUTLOG_AVX512BW_SELECT(char)
+KUTLOG_AVX512BW_SELECT(short)
+KUTLOG_AVX512BW_SELECT(unsigned short)
+KUTLOG_AVX512BW_SELECT(int)
+KUTLOG_AVX512BW_SELECT(unsigned int)
+KUTLOG_AVX512BW_SELECT(long)
+KUTLOG_AVX512BW_SELECT(unsigned long)
+KUTLOG_AVX512BW_SELECT(long long)
+KUTLOG_AVX512BW_SELECT(unsigned long long)
+#undef KUTLOG_AVX512BW_SELECT
+}  // namespace xsimd::kernel
 #endif
 
 // xsimd 8.1 on AArch64 (neon64) takes its float division, square root and reciprocal from

@@ -1,4 +1,4 @@
-#include "kutlog/article.hpp"
+#include "article.hpp"
 
 #include <algorithm>
 #include <cmath>

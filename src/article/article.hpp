@@ -1,5 +1,5 @@
-// kutlog/article.hpp: the article's published results, and the computations that reproduce
-// them from the reference (kutlog/reference.hpp). Used by kutlog-tables and by the tests.
+// article.hpp (kutlog-article): the article's published results, and the computations that
+// reproduce them from the reference (kutlog/reference.hpp). Used by kutlog-tables and tests.
 //
 // Zavalniuk, Romanyuk, Prozor, Snigur, "Energetically correct reflectance model based on the
 // calculation of the angle between vectors", 2023, doi:10.31649/1999-9941-2023-56-1-75-82.

@@ -1,0 +1,36 @@
+// kutlog/detail/lobe_dispatch.hpp: the per-arch tables of lobe loops that Lobe's inline array
+// eval reads (filled by src/arch/, chosen by src/dispatch.cpp).
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+
+#include "kutlog/api.hpp"
+#include "kutlog/detail/lobe_kernel.hpp"
+
+KUTLOG_API_BEGIN
+namespace kutlog {
+
+namespace detail {
+// One arch's lobe loops, by slot: per degree and finish, unrolled; the last for any kernel.
+using LobeArrayKernel = void (*)(const LobeKernel&, const float*, float*, std::size_t);
+struct LobeArrayKernels {
+  static constexpr int kMaxUnrolledDegree = 16;
+  static constexpr int kSlotsPerDegree = 5;
+  static constexpr int kSlots = kSlotsPerDegree * (kMaxUnrolledDegree + 1) + 1;
+  bool fused_fma;  // which of a Lobe's kernels this arch runs
+  LobeArrayKernel by_slot[kSlots];
+  static constexpr int slot_of(const LobeKernel& kernel) {
+    if (kernel.form != LobeKernel::Form::polynomial || kernel.degree > kMaxUnrolledDegree)
+      return kSlots - 1;
+    const int finish = kernel.compensated ? 2 : kernel.scale_lo != 0 ? 1 : 0;
+    return kSlotsPerDegree * kernel.degree + (kernel.clamped || finish == 2 ? finish : 3 + finish);
+  }
+  LobeArrayKernel of(const LobeKernel& kernel) const { return by_slot[slot_of(kernel)]; }
+};
+// The active arch's loops; null until the first array call (src/dispatch.cpp).
+extern std::atomic<const LobeArrayKernels*> active_lobe_loops;
+}  // namespace detail
+
+}  // namespace kutlog
+KUTLOG_API_END

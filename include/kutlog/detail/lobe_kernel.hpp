@@ -1,0 +1,160 @@
+// kutlog/detail/lobe_kernel.hpp: what the kernels need of one material, precomputed by the
+// classes of kutlog/lobe.hpp, and the scalar evaluators. Method: docs/design.md.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+
+#include "kutlog/api.hpp"
+
+KUTLOG_API_BEGIN
+namespace kutlog {
+
+// F(t) = scale * P(w), w = 1 - min(t, 1), zero where t <= t_cut.
+struct LobeKernel {
+  static constexpr int kMaxDegree = 24;
+  enum class Form : std::uint8_t {
+    polynomial,  // P = 1 - w q(s), s = center_t - min(t, 1); SIMD: q in float lanes
+    base_power,  // P = (1 - w q(w))^k; SIMD: q and the power in double lanes
+  };
+  Form form = Form::polynomial;
+  int degree = 0;  // of q
+  int k = 1;       // the power, for base_power
+  float t_cut = 0;
+  float center_t = 1;  // polynomial: q's powers are of center_t - t; center_t ~ cos(gran)
+  float scale_f = 1;
+  // scale - scale_f: added before the peak, so that scale_f's rounding does not count whole.
+  float scale_lo = 0;
+  // FMA only: q's last Horner step kept exact as a pair (for a 2 ULP normalized epicenter).
+  bool compensated = false;
+  // Whether the output is clamped to [0, scale_f]; dropped where the setup proves it needless.
+  bool clamped = true;
+  double scale_d = 1;
+  std::array<float, kMaxDegree + 1> q_f{};   // SIMD polynomial form, times scale
+  std::array<double, kMaxDegree + 1> q_d{};  // base_power form; scalar: both forms, times scale
+
+  // The scalar path's value before its rounding. Always inlined, as evaluate: GCC would call
+  // them for their size.
+  [[gnu::always_inline]] double unrounded(float t) const noexcept {
+    const double t_capped = t < 1.0f ? double(t) : 1.0, w = 1.0 - t_capped;  // NaN kept
+    if (form == Form::base_power)
+      return with_q(w, [&](double q) { return scale_d * base_power(1.0 - w * q); });
+    return with_q(double(center_t) - t_capped, [&](double q) { return scale_d - w * q; });
+  }
+  // A branch, not a select: past the cut the polynomial's values would cost one every call.
+  [[gnu::always_inline]] float evaluate(float t) const noexcept {
+    if (!(t > t_cut)) return t == t ? 0.0f : t;
+    return std::min(std::max(float(unrounded(t)), 0.0f), scale_f);
+  }
+
+ private:
+  // finish(q(x)) by Estrin's scheme, a chain log2 of the degree deep (src/lobe_bound.cpp).
+  template <class Finish>
+  [[gnu::always_inline]] double with_q(double x, Finish finish) const {
+    switch (degree) {
+      case 0: return finish(q_d[0]);
+      case 1: return finish(estrin<0, 2>(x));
+      case 2: return finish(estrin<0, 3>(x));
+      case 3: return finish(estrin<0, 4>(x));
+      case 4: return finish(estrin<0, 5>(x));
+      case 5: return finish(estrin<0, 6>(x));
+      case 6: return finish(estrin<0, 7>(x));
+      case 7: return finish(estrin<0, 8>(x));
+      case 8: return finish(estrin<0, 9>(x));
+      case 9: return finish(estrin<0, 10>(x));
+      case 10: return finish(estrin<0, 11>(x));
+      case 11: return finish(estrin<0, 12>(x));
+      case 12: return finish(estrin<0, 13>(x));
+      default: {  // the same tree, level by level: pairs, then pairs of pairs
+        std::array<double, kMaxDegree + 1> sums = q_d;
+        double power = x;
+        for (std::size_t count = std::size_t(degree) + 1; count > 1;
+             count = (count + 1) / 2, power *= power) {
+          for (std::size_t j = 0; 2 * j + 1 < count; ++j)
+            sums[j] = sums[2 * j] + power * sums[2 * j + 1];
+          if (count % 2 == 1) sums[count / 2] = sums[count - 1];
+        }
+        return finish(sums[0]);
+      }
+    }
+  }
+  // The sum of q_d[kFirst + i] x^i over i < kCount.
+  template <int kFirst, int kCount>
+  [[gnu::always_inline]] double estrin(double x) const {
+    if constexpr (kCount == 1) {
+      return q_d[kFirst];
+    } else {
+      constexpr int kLow = int(std::bit_floor(unsigned(kCount - 1)));
+      double power = x;
+      for (int m = 1; m < kLow; m *= 2) power *= power;
+      return estrin<kFirst, kLow>(x) + power * estrin<kFirst + kLow, kCount - kLow>(x);
+    }
+  }
+  [[gnu::always_inline]] double base_power(double base) const {
+    const double square = base * base;
+    switch (k) {
+      case 1: return base;
+      case 2: return square;
+      case 3: return square * base;
+      case 4: return square * square;
+      case 5: return square * square * base;
+      default: {
+        double power = 1.0, factor = base;
+        for (int e = k; e > 0; e >>= 1, factor *= factor)
+          if (e & 1) power *= factor;
+        return power;
+      }
+    }
+  }
+};
+
+// PerLaneLobe's: c^2 = n H(1/n - y_center), coef = n K(.), acos(t)^2 = w G(w), v = c^2 acos(t)^2
+// and F = (1 - v R(v - v_center))^k.
+struct PerLaneKernel {
+  static constexpr int kMaxDegree = 20;
+  using Coefficients = std::array<float, kMaxDegree + 1>;
+  float n_min = 1, n_max = 1, y_center = 0, v_center = 0, v_cut = 0, t_guard = 0;
+  int k = 1, h_degree = 0, k_degree = 0, g_degree = 0, r_degree = 0;
+  Coefficients h{}, coef_k{}, g{}, r{};
+
+  // The SIMD kernel's formulas in double, rounded once.
+  float evaluate(float t, float n, bool normalized) const noexcept {
+    if (t != t || n != n) return t + n;  // NaN
+    const double n_clamped = double(n < n_min ? n_min : n > n_max ? n_max : n);
+    const double y_offset = 1.0 / n_clamped - double(y_center);
+    const double w = t < 1.0f ? 1.0 - double(t) : 0.0;
+    const double v = n_clamped * horner(h, h_degree, y_offset) * (w * horner(g, g_degree, w));
+    if (t <= t_guard || v >= double(v_cut)) return 0.0f;
+    double base = 1.0 - v * horner(r, r_degree, v - double(v_center)), power = 1.0;
+    for (int e = k; e > 0; e >>= 1, base *= base)
+      if (e & 1) power *= base;
+    power = power < 0.0 ? 0.0 : power > 1.0 ? 1.0 : power;
+    return float(normalized ? power * (n_clamped * horner(coef_k, k_degree, y_offset)) : power);
+  }
+
+ private:
+  static double horner(const Coefficients& coefficients, int degree, double x) noexcept {
+    std::size_t i = std::size_t(degree);
+    double result = double(coefficients[i]);
+    while (i-- > 0) result = result * x + double(coefficients[i]);
+    return result;
+  }
+};
+
+// PowerPoly's: y = n log2 t = x L(x) (+ n e), scale 2^y = 2^round(y) E(y - round(y)).
+struct PowerPolyKernel {
+  static constexpr int kMaxLogDegree = 12;
+  static constexpr int kPreciseExpDegree = 6, kFastExpDegree = 4;  // of E, by variant
+  bool decomposed = false;  // t_zero below sqrt(1/2): t's exponent taken apart first
+  float t_zero = 0;         // out = 0 at and below it, where scale t^n < the variant's bound / 2
+  float n = 1;
+  int log_degree = 1, exp_degree = 6;
+  std::array<float, kMaxLogDegree + 1> log{};  // n log2(1 + x) / x
+  std::array<float, kPreciseExpDegree + 1> exp{};  // scale 2^f, exp[0] = the float scale
+};
+
+}  // namespace kutlog
+KUTLOG_API_END
