@@ -187,27 +187,21 @@ const detail::LobeArrayKernels* detail::fused_lobe_array_kernels() {
 }
 
 namespace math {
-void acos_u10(const float* x, float* out, std::size_t count) {
-  active_table().acos_u10(x, out, count);
-}
-void cos_u10(const float* x, float* out, std::size_t count) {
-  active_table().cos_u10(x, out, count);
-}
-void cos_halfpi_u10(const float* x, float* out, std::size_t count) {
-  active_table().cos_halfpi_u10(x, out, count);
-}
-void exp_u10(const float* x, float* out, std::size_t count) {
-  active_table().exp_u10(x, out, count);
-}
-void log_u10(const float* x, float* out, std::size_t count) {
-  active_table().log_u10(x, out, count);
-}
-void pow_u10(const float* x, const float* y, float* out, std::size_t count) {
-  active_table().pow_u10(x, y, out, count);
-}
-void pow_u10(const float* x, float y, float* out, std::size_t count) {
-  active_table().pow_scalar_u10(x, y, out, count);
-}
+#define KUTLOG_FORWARD_UNARY(function, kernel, ...)           \
+  void kernel(const float* x, float* out, std::size_t count) { \
+    active_table().kernel(x, out, count);                      \
+  }
+#define KUTLOG_FORWARD_BINARY(function, kernel, ...)                             \
+  void kernel(const float* x, const float* y, float* out, std::size_t count) { \
+    active_table().kernel(x, y, out, count);                                   \
+  }                                                                            \
+  void kernel(const float* x, float y, float* out, std::size_t count) {        \
+    active_table().kernel##_scalar(x, y, out, count);                          \
+  }
+KUTLOG_UNARY_MATH_FUNCTIONS(KUTLOG_FORWARD_UNARY)
+KUTLOG_BINARY_MATH_FUNCTIONS(KUTLOG_FORWARD_BINARY)
+#undef KUTLOG_FORWARD_UNARY
+#undef KUTLOG_FORWARD_BINARY
 }  // namespace math
 
 void Lobe::eval_out_of_line(const float* t, float* out, std::size_t count, Variant variant,

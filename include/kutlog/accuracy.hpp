@@ -14,6 +14,7 @@
 #include <string_view>
 
 #include "kutlog/api.hpp"
+#include "kutlog/detail/math_functions.hpp"
 
 KUTLOG_API_BEGIN
 namespace kutlog {
@@ -68,16 +69,12 @@ struct AccuracyBound {
   constexpr double max_ulp() const { return measured_ulp.on(kPlatform); }
 };
 
+// One row per kernel of kutlog/detail/math_functions.hpp.
 inline constexpr AccuracyBound kAccuracyBounds[] = {
-    {"acos_u10", "acos", "precise", 1.0, {0.65, 0.61}, "[-1, 1]", -1.0f, 1.0f},
-    {"cos_u10", "cos", "precise", 1.0, {0.81, 0.81}, "[-pi, pi]", -3.14159274f, 3.14159274f},
-    {"cos_halfpi_u10", "cos_halfpi", "precise", 1.0, {0.81, 0.81}, "[0, pi/2]", 0.0f, 1.57079637f},
-    {"exp_u10", "exp", "precise", 1.0, {0.51, 0.51}, "[-104, 89] (0 or inf beyond)", -104.0f, 89.0f},
-    {"log_u10", "log", "precise", 1.0, {0.67, 0.64}, "(0, FLT_MAX] (inf for inf)", 0x1p-149f,
-     3.40282347e38f},
-    {"pow_u10", "pow", "precise", 1.0, {0.54, 0.52},
-     "x in (0, 2^8], y in {1, 2, 5, 10, 50, 100, 500, 1000, 5000}; 10^7 random (x, y)", 0x1p-149f,
-     256.0f},
+#define KUTLOG_ACCURACY_BOUND(function, kernel, promised, x86_64, aarch64, domain, lo, hi, ...) \
+  {#kernel, #function, "precise", promised, {x86_64, aarch64}, domain, lo, hi},
+    KUTLOG_MATH_FUNCTIONS(KUTLOG_ACCURACY_BOUND)
+#undef KUTLOG_ACCURACY_BOUND
 };
 
 // The lobe kernels (kutlog/lobe.hpp), in the units of the value returned, out, against the

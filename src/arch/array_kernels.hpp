@@ -388,29 +388,22 @@ template <class Arch>
 KernelTable make_kernel_table() {
   using F = xsimd::batch<float, Arch>;
   KernelTable table{};
-  table.acos_u10 = [](const float* x, float* out, std::size_t count) {
-    map_arrays<Arch, 1>([](F v) { return simd::acos_u10(v); }, {x}, out, count);
+#define KUTLOG_UNARY_SLOT(function, kernel, ...)                               \
+  table.kernel = [](const float* x, float* out, std::size_t count) {           \
+    map_arrays<Arch, 1>([](F v) { return simd::kernel(v); }, {x}, out, count); \
   };
-  table.cos_u10 = [](const float* x, float* out, std::size_t count) {
-    map_arrays<Arch, 1>([](F v) { return simd::cos_u10(v); }, {x}, out, count);
+#define KUTLOG_BINARY_SLOTS(function, kernel, ...)                                             \
+  table.kernel = [](const float* x, const float* y, float* out, std::size_t count) {           \
+    map_arrays<Arch, 2>([](F a, F b) { return simd::kernel(a, b); }, {x, y}, out, count);      \
+  };                                                                                           \
+  table.kernel##_scalar = [](const float* x, float y, float* out, std::size_t count) {         \
+    const F second(y);                                                                         \
+    map_arrays<Arch, 1>([second](F a) { return simd::kernel(a, second); }, {x}, out, count);   \
   };
-  table.cos_halfpi_u10 = [](const float* x, float* out, std::size_t count) {
-    map_arrays<Arch, 1>([](F v) { return simd::cos_halfpi_u10(v); }, {x}, out, count);
-  };
-  table.exp_u10 = [](const float* x, float* out, std::size_t count) {
-    map_arrays<Arch, 1>([](F v) { return simd::exp_u10(v); }, {x}, out, count);
-  };
-  table.log_u10 = [](const float* x, float* out, std::size_t count) {
-    map_arrays<Arch, 1>([](F v) { return simd::log_u10(v); }, {x}, out, count);
-  };
-  table.pow_u10 = [](const float* x, const float* y, float* out, std::size_t count) {
-    map_arrays<Arch, 2>([](F a, F b) { return simd::pow_u10(a, b); }, {x, y}, out, count);
-  };
-  table.pow_scalar_u10 = [](const float* x, float y, float* out, std::size_t count) {
-    const F exponent(y);
-    map_arrays<Arch, 1>([exponent](F a) { return simd::pow_u10(a, exponent); }, {x}, out,
-                        count);
-  };
+  KUTLOG_UNARY_MATH_FUNCTIONS(KUTLOG_UNARY_SLOT)
+  KUTLOG_BINARY_MATH_FUNCTIONS(KUTLOG_BINARY_SLOTS)
+#undef KUTLOG_UNARY_SLOT
+#undef KUTLOG_BINARY_SLOTS
   static_cast<LobeArrayKernels&>(table) = lobe_array_kernels<Arch>();
   table.kutlog_per_lane = [](const PerLaneKernel& kernel, bool normalized, const float* t,
                              const float* n, float* out, std::size_t count) {

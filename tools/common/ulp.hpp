@@ -82,6 +82,8 @@ struct UnaryFunction {
   std::string_view domain_text;
 };
 const std::vector<UnaryFunction>& unary_functions();
+// Every math kernel's function name (kutlog/detail/math_functions.hpp), unary and binary.
+std::vector<std::string> math_function_names();
 const UnaryFunction* find_unary_function(std::string_view name);
 
 // The exponents of the exhaustive pow sweep, each over every float x in (0, 1] and [1, 2^8].
