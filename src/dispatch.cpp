@@ -28,7 +28,7 @@ struct ArchEntry {
   const detail::KernelTable& (*kernel_table)();
 };
 constexpr ArchEntry kArchEntries[] = {
-#define KUTLOG_ARCH_ENTRY(id, name, xsimd_arch, cpu_features) \
+#define KUTLOG_ARCH_ENTRY(id, name, xsimd_arch, cpu_features, ...) \
   {name, cpu_features, &detail::kernel_table<Arch::id>},
     KUTLOG_ARCHS(KUTLOG_ARCH_ENTRY)
 #undef KUTLOG_ARCH_ENTRY

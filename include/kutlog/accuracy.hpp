@@ -14,12 +14,13 @@
 #include <string_view>
 
 #include "kutlog/api.hpp"
+#include "kutlog/archs.hpp"
 #include "kutlog/detail/math_functions.hpp"
 
 KUTLOG_API_BEGIN
 namespace kutlog {
 
-// The platforms with a measured column: x86-64 (avx512, avx2, sse4.1) and aarch64 (neon64).
+// The platforms with a measured column, over the archs the registry has for each.
 enum class Platform { x86_64, aarch64 };
 inline constexpr Platform kPlatform =
 #if defined(__aarch64__)
@@ -44,10 +45,10 @@ struct Measurement {
   std::string_view command;
 };
 inline constexpr Measurement kMeasurements[] = {
-    {Platform::x86_64, "avx512 avx2 sse4.1", "exhaustive",
+    {Platform::x86_64, KUTLOG_ARCH_NAMES_X86_64, "exhaustive",
      "every float of each math kernel's domain, every float t of each lobe's support (below)",
      "kutlog-ulp --arch all --summary; ctest --test-dir build -L exhaustive"},
-    {Platform::aarch64, "neon64", "sampled",
+    {Platform::aarch64, KUTLOG_ARCH_NAMES_AARCH64, "sampled",
      "under qemu-aarch64 (KUTLOG_SWEEP_SAMPLES=2^24): 2^24 floats evenly spread over each "
      "math kernel's domain plus every float of its hardest ranges (tests/test_math_exhaustive.cpp); "
      "2^24 floats of t shared among the lobes of each sweep, over their supports and as many over "

@@ -27,14 +27,14 @@ namespace kutlog {
 
 // One enumerator per arch of the registry, in its order (best first, from 0).
 enum class Arch {
-#define KUTLOG_ARCH_ENUMERATOR(id, name, xsimd_arch, cpu_features) id,
+#define KUTLOG_ARCH_ENUMERATOR(id, ...) id,
   KUTLOG_ARCHS(KUTLOG_ARCH_ENUMERATOR)
 #undef KUTLOG_ARCH_ENUMERATOR
 };
 
 // Every arch kutlog is compiled for, best first; the last is the baseline.
 inline constexpr std::array kCompiledArchs = {
-#define KUTLOG_ARCH_VALUE(id, name, xsimd_arch, cpu_features) Arch::id,
+#define KUTLOG_ARCH_VALUE(id, ...) Arch::id,
     KUTLOG_ARCHS(KUTLOG_ARCH_VALUE)
 #undef KUTLOG_ARCH_VALUE
 };
