@@ -20,7 +20,8 @@
 namespace kutlog::simd {
 
 namespace detail {
-// b^k for a small positive integer k known per call (a loop over its bits, not per lane).
+// b^k for a small positive integer k known per call (a loop over its bits, not per lane). Kept
+// apart from detail::integer_power: the certified double-form bound counts these products.
 template <class Batch>
 inline Batch integer_power(Batch base, int k) {
   Batch result(1.0);

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "kutlog/detail/integer_power.hpp"
 #include "kutlog/sampling.hpp"
 #include "kutlog/simd/lobe.hpp"
 #include "kutlog/simd/math.hpp"
@@ -191,8 +192,7 @@ class PreparedSampler {
 // the batch code out (the bounds' errors are the fit's and the outputs' roundings). The arch
 // brings its FMA only: one sample's cost is a chain of dependent multiply-adds, which fusing
 // shortens. Helpers are templates on the arch, as everything here: each arch's TU
-// compiles its own (so integer_power below is not detail::integer_power<double>, which every
-// arch's TU would instantiate under one name, compiled with different flags).
+// compiles its own.
 namespace one_sample {
 
 struct SinCos {
@@ -253,14 +253,6 @@ inline float unit_interval(float u) {
   return u > 0 ? std::min(u, detail::kLargestBelowOne) : 0.0f;
 }
 
-template <class Arch>
-inline double integer_power(double base, int k) {
-  double power = 1;
-  for (; k > 0; k >>= 1, base *= base)
-    if (k & 1) power *= base;
-  return power;
-}
-
 // The polar angle theta(u1) of the fitted inverse CDF (the fine table), in [0, limit].
 template <class Arch>
 inline double polar_angle(const SamplerKernel& kernel, float u1) {
@@ -290,7 +282,7 @@ inline SampledDirection sample(const SamplerKernel& kernel, float u1, float u2) 
   const SinCos azimuth = sin_cos_turn<Arch>(unit_interval<Arch>(u2));
   // F = cos^k(c theta) with cos(c theta) = 1 - 2 sin^2(c theta / 2), c theta in [0, pi/2].
   const double sin_half = sin_cos_quarter_pi<Arch>(0.5 * double(kernel.c) * theta).sin;
-  const double lobe = integer_power<Arch>(1 - 2 * sin_half * sin_half, kernel.k);
+  const double lobe = kutlog::detail::integer_power<Arch>(1 - 2 * sin_half * sin_half, kernel.k);
   const double density =
       double(kernel.density_scale) * lobe * (kernel.cosine_weighted ? polar.cos : 1);
   return {float(polar.sin * azimuth.cos), float(polar.sin * azimuth.sin), float(polar.cos),
