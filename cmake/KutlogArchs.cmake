@@ -71,7 +71,7 @@ if(NOT KUTLOG_ARCHS AND NOT KUTLOG_PORTABLE_ONLY)
   message(STATUS "kutlog has no SIMD arch for ${CMAKE_SYSTEM_PROCESSOR}: portable kernels only")
 endif()
 # The same kernel templates on kutlog::simd::portable, an xsimd arch of the compiler's own
-# vectors (kutlog/simd/portable.hpp): no flags, any CPU, correct and slower: the only entry on
+# vectors (kutlog/simd/detail/portable.hpp): no flags, any CPU, correct and slower: the only entry on
 # a CPU kutlog has no SIMD arch for. Not on x86-64 nor AArch64: there it would only serve
 # x86-64 CPUs without SSE4.1 (none made since 2011), and as one more arch of every per-arch
 # test it would add about 16 minutes to the exhaustive sweeps; KUTLOG_PORTABLE_ONLY tests it.

@@ -27,8 +27,8 @@
 #endif
 #endif
 
-// The portable arch declares its kernels before xsimd defines batch (kutlog/simd/portable.hpp).
-#include "kutlog/simd/portable.hpp"
+// The portable arch declares its kernels before xsimd defines batch (kutlog/simd/detail/portable.hpp).
+#include "kutlog/simd/detail/portable.hpp"
 
 #include <xsimd/xsimd.hpp>
 // On a CPU xsimd 8.1 has no arch for, xsimd.hpp stops before batch: the portable arch needs it.
