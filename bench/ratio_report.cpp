@@ -207,8 +207,8 @@ bool RatioCollector::print_math_ratios(std::FILE* out) const {
                      "std scalar (M/s) | kutlog / std |\n|---|---|---:|---:|---:|---:|---:|\n");
         header = true;
       }
-      std::fprintf(out, "| %s | %s | %.0f | %.0f | %.2f | %.0f | %.1f |\n", function.c_str(), arch.c_str(),
-                   ours / 1e6, xsimd / 1e6, xsimd ? ours / xsimd : 0.0, scalar / 1e6,
+      std::fprintf(out, "| %s | %s | %.0f | %.0f | %.2f | %.0f | %.1f |\n", function.c_str(),
+                   arch.c_str(), ours / 1e6, xsimd / 1e6, xsimd ? ours / xsimd : 0.0, scalar / 1e6,
                    scalar ? ours / scalar : 0.0);
     }
   return header;

@@ -1,17 +1,6 @@
-// kutlog/simd/xsimd.hpp: xsimd, as every kutlog header and source includes it, so that an
-// unoptimized GCC build of the AVX-512 kernels compiles.
-//
-// Without optimization (no __OPTIMIZE__: -O0, a Debug build), GCC 12's avx512bwintrin.h makes
-// _mm512_mask_blend_epi8 and _mm512_mask_blend_epi16 macros that cast their operands straight
-// to __v64qi / __v32hi; with optimization they are functions taking __m512i. xsimd 8.1's
-// avx512bw select hands them batches, which convert to __m512i but not to a vector of bytes,
-// in a switch on sizeof(T) whose 8- and 16-bit cases are compiled for every T: no integer
-// select compiles, and xsimd::log and xsimd::pow (blinn_phong_xsimd, the benchmarks) need one.
-// Upstream xsimd fixed the call (xtensor-stack/xsimd#852, after 8.1). Here the two macros
-// become the masked moves, which are functions at every level: blend(k, a, b) takes b where k
-// is set and a elsewhere, as mask_mov(a, k, b) does. This must come before xsimd's headers: a
-// macro expands where xsimd's template is written, not where it is instantiated. Optimized
-// builds (Release, RelWithDebInfo) compile exactly as without this header.
+// kutlog/simd/xsimd.hpp: xsimd as every kutlog file includes it, with the fixes of
+// docs/design.md "Patches to xsimd 8.1": GCC's -O0 AVX-512 blend macros, neon64's division,
+// square root and reciprocal, and the portable arch where xsimd has none.
 #pragma once
 
 #if defined(__GNUC__) && !defined(__clang__) && !defined(__OPTIMIZE__) && \
@@ -27,11 +16,11 @@
 #endif
 #endif
 
-// The portable arch declares its kernels before xsimd defines batch (kutlog/simd/detail/portable.hpp).
+// Before xsimd: its qualified kernel calls bind where written.
 #include "kutlog/simd/detail/portable.hpp"
 
 #include <xsimd/xsimd.hpp>
-// On a CPU xsimd 8.1 has no arch for, xsimd.hpp stops before batch: the portable arch needs it.
+// Where xsimd has no arch, xsimd.hpp stops before batch, which the portable arch needs.
 #ifdef XSIMD_NO_SUPPORTED_ARCHITECTURE
 #include <xsimd/types/xsimd_batch.hpp>
 #include <xsimd/types/xsimd_batch_constant.hpp>
@@ -39,15 +28,8 @@
 #include <xsimd/types/xsimd_api.hpp>
 #endif
 
-// xsimd 8.1 on AArch64 (neon64) takes its float division, square root and reciprocal from
-// 32-bit ARM's NEON: a / b and sqrt(x) are estimates refined by two Newton steps (neither
-// correctly rounded, nor right for infinities and subnormals), and reciprocal(x) is the bare
-// FRECPE estimate (8 bits, where x86's rcpps has 12 and the refinements in kutlog assume 12).
-// AArch64 has IEEE division and square root (FDIV, FSQRT): these explicit specializations of
-// xsimd's own kernels make them the ones used, and reciprocal one Newton step (FRECPS) better,
-// 16 bits. Being specializations, not overloads, they need no lookup: they apply wherever
-// xsimd's templates are instantiated after this header, which every kutlog header includes
-// first.
+// neon64: FDIV, FSQRT and FRECPE plus one FRECPS step instead of xsimd's 32-bit NEON estimates;
+// explicit specializations, so they apply wherever xsimd's templates are instantiated.
 #if XSIMD_WITH_NEON64
 namespace xsimd::kernel {
 template <>
