@@ -181,7 +181,7 @@ namespace detail {
 // unrolled and testing no flag; in the last slot, one for any kernel. A Lobe computes its
 // kernels' slots at setup, so that a call picks its loop with one load. (FMA-less archs are
 // never given a compensated kernel: Lobe keeps those for Arithmetic::fused.) Filled per arch
-// by src/arch/array_kernels.hpp; here because Lobe's array eval reads it inline.
+// by src/arch/lobe_loops.hpp; here because Lobe's array eval reads it inline.
 using LobeArrayKernel = void (*)(const LobeKernel&, const float*, float*, std::size_t);
 struct LobeArrayKernels {
   static constexpr int kMaxUnrolledDegree = 16;
@@ -276,7 +276,8 @@ class Lobe {
 
  private:
   [[noreturn]] void throw_coef_overflow() const;
-  // The array eval's first call (and first after reset_arch), and its throw (src/dispatch.cpp).
+  // The array eval's first call (and first after reset_arch; src/forwarders.cpp), and its
+  // throw (src/lobe.cpp).
   [[gnu::cold]] void eval_out_of_line(const float* t, float* out, std::size_t count,
                                       Variant variant, Normalization normalization) const;
 
