@@ -2,7 +2,9 @@
 // and has_fused_fma against the arch registry.
 #include <gtest/gtest.h>
 
+#include "arch/kernel_table.hpp"
 #include "cpu_features.hpp"
+#include "kutlog/dispatch.hpp"
 #include "kutlog/archs.hpp"
 #include "kutlog/simd/float_ops.hpp"
 
@@ -15,6 +17,16 @@ namespace {
                 "has_fused_fma of arch " name " differs from the registry's FUSED_FMA");
 KUTLOG_ARCHS(KUTLOG_CHECK_FUSED_FMA)
 #undef KUTLOG_CHECK_FUSED_FMA
+
+// The arithmetic agrees with the registry: each supported arch's mul_add rounds once exactly
+// where its entry says FUSED_FMA YES.
+TEST(FusedFma, MulAddRoundsOnceExactlyWhereTheRegistrySaysSo) {
+#define KUTLOG_CHECK_MUL_ADD(id, name, xsimd_arch, cpu_features, fused_fma)            \
+  if (arch_supported(Arch::id))                                                         \
+    EXPECT_EQ(kernel_table<Arch::id>().mul_add_rounds_once(), fused_fma) << name;
+  KUTLOG_ARCHS(KUTLOG_CHECK_MUL_ADD)
+#undef KUTLOG_CHECK_MUL_ADD
+}
 
 TEST(CpuFeatures, UnknownFeaturesAreAbsentAndTheEmptyListIsPresent) {
   EXPECT_FALSE(has_features(CpuWords{}, "no_such_feature"));

@@ -62,6 +62,13 @@ KernelTable make_kernel_table() {
     const F exponent(n);
     map_arrays<Arch, 1>([&](F v) { return simd::schlick(v, exponent); }, {t}, out, count);
   };
+  table.mul_add_rounds_once = [] {
+    // (1 + 2^-12)^2 - (1 + 2^-11) = 2^-24 exactly; 0 where the product rounds first (a tie).
+    alignas(64) float result[F::size];
+    const F a(1.0f + 0x1p-12f);
+    simd::mul_add(a, a, F(-1.0f - 0x1p-11f)).store_aligned(result);
+    return result[0] != 0.0f;
+  };
   return table;
 }
 

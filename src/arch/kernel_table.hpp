@@ -53,6 +53,8 @@ struct KernelTable : LobeArrayKernels {
   ShadeCosinesKernel shade_cosines;
   SampleArrayKernel sample_lobe;
   SampleOneKernel sample_one;
+  // Whether simd::mul_add rounds once on this arch, as measured (tests/test_cpu_features.cpp).
+  bool (*mul_add_rounds_once)();
 };
 
 // The table of one arch: specialized by src/arch/kernels.cpp, which CMake compiles once per
