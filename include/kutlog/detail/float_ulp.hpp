@@ -1,5 +1,4 @@
-// kutlog/detail/float_ulp.hpp: the ulp of a float, read from a double's exponent bits (the
-// setup's bounds and the ULP measurements call it millions of times a second).
+// kutlog/detail/float_ulp.hpp: the ulp of a float, from a double's exponent bits (fast).
 #pragma once
 
 #include <algorithm>
@@ -13,8 +12,7 @@ constexpr double power_of_two(int exponent) {
   return std::bit_cast<double>(std::uint64_t(exponent + 1023) << 52);
 }
 
-// The binary exponent of the ulp of a float of magnitude |value|: e - 23, with e the exponent
-// of value but at least -126 (the subnormals' ulp).
+// log2 of the ulp of a float of magnitude |value| (subnormals included).
 constexpr int float_ulp_exponent(double value) {
   const int biased = int((std::bit_cast<std::uint64_t>(value) >> 52) & 0x7ff);  // 0 for 0
   return std::max(biased - 1023, -126) - 23;

@@ -3,9 +3,8 @@
 
 namespace kutlog::detail {
 
-// base^exponent (exponent >= 0), about 2 log2(exponent) products. Always inlined, and code
-// compiled with one arch's flags passes that arch as Tag: no copy built with one arch's flags
-// can be the one the linker keeps for another.
+// base^exponent, exponent >= 0. Inlined, and tagged by the arch whose flags compile it, so
+// no copy built for one arch is kept for another.
 template <class Tag = void, class T>
 [[gnu::always_inline]] inline T integer_power(T base, int exponent) {
   T power(1.0);

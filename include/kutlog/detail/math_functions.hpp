@@ -1,16 +1,7 @@
-// kutlog/detail/math_functions.hpp: the one list of the SIMD math kernels. The array API, the
-// dispatch table, the accuracy table, the ULP tool, the sweeps, the fuzz target and the
-// benchmarks all expand it, so a new kernel is one entry here plus its kutlog::simd template.
-//
-// X(function, kernel, promised_ulp, measured_x86_64, measured_aarch64, domain, sweep_lo,
-//   sweep_hi, peer, bench_lo, bench_hi)
-//   function    the name the tools and tests take ("acos")
-//   kernel      the kutlog::simd and kutlog::math name, its bound in its suffix (acos_u10)
-//   promised_ulp, measured_*  kutlog/accuracy.hpp's bound and each platform's measured maximum
-//   domain      the domain as documented; sweep_lo, sweep_hi: the floats the sweeps cover
-//   peer        the glibc double function it is measured against, which is also the xsimd
-//               function it is benchmarked against (std::peer, xsimd::peer)
-//   bench_lo, bench_hi  the benchmarks' uniform inputs (of x; a binary kernel's y is 1000)
+// kutlog/detail/math_functions.hpp: the one list of math kernels, which the array API, the
+// dispatch table, the accuracy table, the tools, tests and benchmarks expand (docs/design.md,
+// "Adding a math kernel"). X(function, kernel, promised_ulp, measured_x86_64, measured_aarch64,
+// domain, sweep_lo, sweep_hi, peer: the std:: and xsimd:: function compared, bench_lo, bench_hi)
 #pragma once
 
 #define KUTLOG_UNARY_MATH_FUNCTIONS(X)                                                          \
@@ -24,7 +15,7 @@
   X(log, log_u10, 1.0, 0.67, 0.64, "(0, FLT_MAX] (inf for inf)", 0x1p-149f, 3.40282347e38f,    \
     log, 1e-3f, 1e3f)
 
-// Kernels of two arrays, kernel(x, y); the array API also has kernel(x, one y for all).
+// kernel(x, y); the benchmarks' y is 1000.
 #define KUTLOG_BINARY_MATH_FUNCTIONS(X)                                                        \
   X(pow, pow_u10, 1.0, 0.54, 0.52,                                                             \
     "x in (0, 2^8], y in {1, 2, 5, 10, 50, 100, 500, 1000, 5000}; 10^7 random (x, y)",         \
