@@ -47,7 +47,7 @@ namespace {
 void register_math_benchmarks_for(Arch arch) {
   using Register = void (*)();
   static constexpr Register kRegister[] = {
-#define KUTLOG_REGISTER_MATH(id, name, xsimd_arch, cpu_features) &register_math_benchmarks_of<Arch::id>,
+#define KUTLOG_REGISTER_MATH(id, ...) &register_math_benchmarks_of<Arch::id>,
       KUTLOG_ARCHS(KUTLOG_REGISTER_MATH)
 #undef KUTLOG_REGISTER_MATH
   };

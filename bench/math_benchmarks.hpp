@@ -7,6 +7,7 @@
 #include <string>
 
 #include "inputs.hpp"
+#include "kutlog/detail/math_functions.hpp"
 #include "kutlog/dispatch.hpp"
 #include "kutlog/simd/math.hpp"
 #include "kutlog/simd/xsimd.hpp"
@@ -36,33 +37,36 @@ void run_batches(benchmark::State& state, const Kernel& kernel, const std::vecto
   state.SetItemsProcessed(state.iterations() * std::int64_t(kArrayLength));
 }
 
-// Registers "math/<function>/<implementation>/arch:<arch>" for kutlog_u10 and xsimd.
+// Registers "math/<function>/<implementation>/arch:<arch>" for kutlog_u10 and xsimd, for every
+// kernel of kutlog/detail/math_functions.hpp.
 template <class Arch>
 void register_math_benchmarks(const std::string& arch) {
   using F = xsimd::batch<float, Arch>;
-  struct Function {
-    const char* name;
-    float lo, hi;
-  };
   const auto add = [&](const char* function, const char* implementation, auto kernel,
                        std::vector<float> x, std::vector<float> y) {
     benchmark::RegisterBenchmark(
         ("math/" + std::string(function) + "/" + implementation + "/arch:" + arch).c_str(),
         [=](benchmark::State& state) { run_batches<Arch>(state, kernel, x, y); });
   };
-  const std::vector<float> unit = uniform_inputs(-1, 1), angle = uniform_inputs(-3.14159f, 3.14159f),
-                           exponent = uniform_inputs(-80, 80), positive = uniform_inputs(1e-3f, 1e3f),
-                           base = uniform_inputs(0, 1), thousand(kArrayLength, 1000.0f);
-  add("acos", "kutlog_u10", [](F x, F) { return simd::acos_u10(x); }, unit, unit);
-  add("acos", "xsimd", [](F x, F) { return xsimd::acos(x); }, unit, unit);
-  add("cos", "kutlog_u10", [](F x, F) { return simd::cos_u10(x); }, angle, angle);
-  add("cos", "xsimd", [](F x, F) { return xsimd::cos(x); }, angle, angle);
-  add("exp", "kutlog_u10", [](F x, F) { return simd::exp_u10(x); }, exponent, exponent);
-  add("exp", "xsimd", [](F x, F) { return xsimd::exp(x); }, exponent, exponent);
-  add("log", "kutlog_u10", [](F x, F) { return simd::log_u10(x); }, positive, positive);
-  add("log", "xsimd", [](F x, F) { return xsimd::log(x); }, positive, positive);
-  add("pow", "kutlog_u10", [](F x, F y) { return simd::pow_u10(x, y); }, base, thousand);
-  add("pow", "xsimd", [](F x, F y) { return xsimd::pow(x, y); }, base, thousand);
+  const std::vector<float> thousand(kArrayLength, 1000.0f);
+#define KUTLOG_BENCH_UNARY(function, kernel, promised, x86_64, aarch64, domain, lo, hi, peer,     \
+                           bench_lo, bench_hi)                                                    \
+  {                                                                                               \
+    const std::vector<float> x = uniform_inputs(bench_lo, bench_hi);                              \
+    add(#function, "kutlog_u10", [](F a, F) { return simd::kernel(a); }, x, x);                   \
+    add(#function, "xsimd", [](F a, F) { return xsimd::peer(a); }, x, x);                         \
+  }
+#define KUTLOG_BENCH_BINARY(function, kernel, promised, x86_64, aarch64, domain, lo, hi, peer,    \
+                            bench_lo, bench_hi)                                                   \
+  {                                                                                               \
+    const std::vector<float> x = uniform_inputs(bench_lo, bench_hi);                              \
+    add(#function, "kutlog_u10", [](F a, F b) { return simd::kernel(a, b); }, x, thousand);       \
+    add(#function, "xsimd", [](F a, F b) { return xsimd::peer(a, b); }, x, thousand);             \
+  }
+  KUTLOG_UNARY_MATH_FUNCTIONS(KUTLOG_BENCH_UNARY)
+  KUTLOG_BINARY_MATH_FUNCTIONS(KUTLOG_BENCH_BINARY)
+#undef KUTLOG_BENCH_UNARY
+#undef KUTLOG_BENCH_BINARY
 }
 
 }  // namespace kutlog::bench

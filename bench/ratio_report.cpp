@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "inputs.hpp"
+#include "kutlog/accuracy.hpp"
 #include "kutlog/dispatch.hpp"
 
 namespace kutlog::bench {
@@ -221,8 +222,9 @@ std::optional<tools::Table> RatioCollector::math_ratios() const {
   tools::Table table({"function", "arch", "kutlog_u10 (M/s)", "xsimd (M/s)", "kutlog / xsimd",
                       "std scalar (M/s)", "kutlog / std"});
   bool any = false;
-  for (const char* function : {"acos", "cos", "exp", "log", "pow"})
+  for (const AccuracyBound& bound : kAccuracyBounds)
     for (const std::string& arch : compiled_arch_names()) {
+      const std::string function(bound.function);
       const std::string suffix = "/arch:" + arch;
       const double ours = rate(std::string("math/") + function + "/kutlog_u10" + suffix);
       const double xsimd = rate(std::string("math/") + function + "/xsimd" + suffix);

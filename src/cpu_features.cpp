@@ -2,13 +2,12 @@
 // arch whose features are all here is only an entry in cmake/KutlogArchs.cmake.
 #include "cpu_features.hpp"
 
-#include <array>
-#include <cstdint>
-
 #include "kutlog/archs.hpp"
 
 #if defined(__x86_64__) || defined(__i386__)
 #include <cpuid.h>
+#elif defined(__aarch64__) && defined(__linux__)
+#include <sys/auxv.h>
 #endif
 
 namespace kutlog::detail {
@@ -22,29 +21,40 @@ enum class RegisterState { sse, ymm, zmm };
 
 struct Feature {
   std::string_view name;
-  unsigned leaf;     // CPUID leaf (subleaf 0)
-  int reg;           // 0 ebx, 1 ecx, 2 edx
+  CpuidWord word;
   unsigned bit;
   RegisterState state;
 };
 
-constexpr int kEbx = 0, kEcx = 1, kEdx = 2;
+using enum CpuidWord;
 constexpr std::array kFeatures = {
-    Feature{"sse2", 1, kEdx, bit_SSE2, RegisterState::sse},
-    Feature{"sse3", 1, kEcx, bit_SSE3, RegisterState::sse},
-    Feature{"ssse3", 1, kEcx, bit_SSSE3, RegisterState::sse},
-    Feature{"sse4_1", 1, kEcx, bit_SSE4_1, RegisterState::sse},
-    Feature{"sse4_2", 1, kEcx, bit_SSE4_2, RegisterState::sse},
-    Feature{"avx", 1, kEcx, bit_AVX, RegisterState::ymm},
-    Feature{"fma", 1, kEcx, bit_FMA, RegisterState::ymm},
-    Feature{"avx2", 7, kEbx, bit_AVX2, RegisterState::ymm},
-    Feature{"avx512f", 7, kEbx, bit_AVX512F, RegisterState::zmm},
-    Feature{"avx512cd", 7, kEbx, bit_AVX512CD, RegisterState::zmm},
-    Feature{"avx512dq", 7, kEbx, bit_AVX512DQ, RegisterState::zmm},
-    Feature{"avx512bw", 7, kEbx, bit_AVX512BW, RegisterState::zmm},
-    Feature{"avx512vl", 7, kEbx, bit_AVX512VL, RegisterState::zmm},
-    Feature{"avx512vnni", 7, kEcx, bit_AVX512VNNI, RegisterState::zmm},
+    Feature{"sse2", leaf1_edx, 26, RegisterState::sse},
+    Feature{"sse3", leaf1_ecx, 0, RegisterState::sse},
+    Feature{"ssse3", leaf1_ecx, 9, RegisterState::sse},
+    Feature{"sse4_1", leaf1_ecx, 19, RegisterState::sse},
+    Feature{"sse4_2", leaf1_ecx, 20, RegisterState::sse},
+    Feature{"avx", leaf1_ecx, 28, RegisterState::ymm},
+    Feature{"fma", leaf1_ecx, 12, RegisterState::ymm},
+    Feature{"avx2", leaf7_ebx, 5, RegisterState::ymm},
+    Feature{"avx512f", leaf7_ebx, 16, RegisterState::zmm},
+    Feature{"avx512dq", leaf7_ebx, 17, RegisterState::zmm},
+    Feature{"avx512cd", leaf7_ebx, 28, RegisterState::zmm},
+    Feature{"avx512bw", leaf7_ebx, 30, RegisterState::zmm},
+    Feature{"avx512vl", leaf7_ebx, 31, RegisterState::zmm},
+    Feature{"avx512vnni", leaf7_ecx, 11, RegisterState::zmm},
+    Feature{"avx_vnni", leaf7_1_eax, 4, RegisterState::ymm},
+    Feature{"avx10", leaf7_1_edx, 19, RegisterState::zmm},
+    Feature{"avx10_512", leaf24_ebx, 18, RegisterState::zmm},
 };
+
+constexpr unsigned kOsxsaveBit = 27;  // leaf 1 ecx
+
+bool detect(const Feature& feature, const CpuWords& words) {
+  if (!(words[feature.word] >> feature.bit & 1)) return false;
+  if (feature.state == RegisterState::sse) return true;
+  if (feature.state == RegisterState::ymm) return (words.xcr0 & 0x6) == 0x6;  // SSE, AVX state
+  return (words.xcr0 & 0xe6) == 0xe6;  // plus opmask, ZMM_Hi256, Hi16_ZMM
+}
 
 std::uint64_t read_xcr0() {
   std::uint32_t low, high;
@@ -52,29 +62,51 @@ std::uint64_t read_xcr0() {
   return (std::uint64_t(high) << 32) | low;
 }
 
-// CPUID says what the processor has; XGETBV says which register states the OS saves (xsimd
-// 8.1 checks only CPUID).
-bool detect(const Feature& feature) {
-  unsigned regs[3], eax;
-  if (!__get_cpuid_count(feature.leaf, 0, &eax, &regs[kEbx], &regs[kEcx], &regs[kEdx]))
-    return false;
-  if (!(regs[feature.reg] & feature.bit)) return false;
-  if (feature.state == RegisterState::sse) return true;
-  unsigned ebx, ecx, edx;
-  if (!__get_cpuid(1, &eax, &ebx, &ecx, &edx) || !(ecx & bit_OSXSAVE)) return false;
-  const std::uint64_t xcr0 = read_xcr0();
-  if (feature.state == RegisterState::ymm) return (xcr0 & 0x6) == 0x6;  // SSE and AVX state
-  return (xcr0 & 0xe6) == 0xe6;  // plus opmask, ZMM_Hi256, Hi16_ZMM
+// CPUID says what the processor has, XGETBV which register states the OS saves (xsimd 8.1
+// checks only CPUID). A sub-leaf or leaf beyond what the CPU reports reads as zeros.
+CpuWords read_words() {
+  CpuWords words;
+  unsigned eax, ebx, ecx, edx;
+  const unsigned max_leaf = __get_cpuid_max(0, nullptr);
+  if (max_leaf >= 1 && __get_cpuid(1, &eax, &ebx, &ecx, &edx)) {
+    words[leaf1_ecx] = ecx, words[leaf1_edx] = edx;
+    if (ecx >> kOsxsaveBit & 1) words.xcr0 = read_xcr0();
+  }
+  if (max_leaf >= 7) {
+    __cpuid_count(7, 0, eax, ebx, ecx, edx);
+    const unsigned max_subleaf = eax;
+    words[leaf7_ebx] = ebx, words[leaf7_ecx] = ecx, words[leaf7_edx] = edx;
+    if (max_subleaf >= 1) {
+      __cpuid_count(7, 1, eax, ebx, ecx, edx);
+      words[leaf7_1_eax] = eax, words[leaf7_1_edx] = edx;
+    }
+  }
+  if (max_leaf >= 0x24 && (words[leaf7_1_edx] >> 19 & 1)) {
+    __cpuid_count(0x24, 0, eax, ebx, ecx, edx);
+    words[leaf24_ebx] = ebx;
+  }
+  return words;
 }
 
 #elif defined(__aarch64__)
 
 struct Feature {
   std::string_view name;
+  std::uint64_t hwcap_bit;
 };
-// Advanced SIMD (NEON) with double lanes and fused multiply-add is part of every AArch64 CPU.
-constexpr std::array kFeatures = {Feature{"neon"}};
-bool detect(const Feature&) { return true; }
+// Advanced SIMD (FEAT_AdvSIMD: double lanes and fused multiply-add) as the kernel reports it.
+constexpr std::uint64_t kHwcapAsimd = 1u << 1;  // HWCAP_ASIMD
+constexpr std::array kFeatures = {Feature{"neon", kHwcapAsimd}};
+bool detect(const Feature& feature, const CpuWords& words) {
+  return (words.hwcap & feature.hwcap_bit) != 0;
+}
+CpuWords read_words() {
+  CpuWords words;
+#if defined(__linux__)
+  words.hwcap = getauxval(AT_HWCAP);
+#endif
+  return words;
+}
 
 #else
 
@@ -82,20 +114,10 @@ struct Feature {
   std::string_view name;
 };
 constexpr std::array<Feature, 0> kFeatures = {};
-bool detect(const Feature&) { return false; }
+bool detect(const Feature&, const CpuWords&) { return false; }
+CpuWords read_words() { return {}; }
 
 #endif
-
-using Detected = std::array<bool, kFeatures.size()>;
-
-const Detected& detected() {
-  static const Detected features = [] {
-    Detected result{};
-    for (std::size_t i = 0; i < kFeatures.size(); ++i) result[i] = detect(kFeatures[i]);
-    return result;
-  }();
-  return features;
-}
 
 template <class Function>
 constexpr bool all_words(std::string_view words, Function&& function) {
@@ -115,7 +137,7 @@ constexpr bool known(std::string_view name) {
 }
 
 // An arch that required a feature missing here would never be chosen: fail the build instead.
-#define KUTLOG_CHECK_CPU_FEATURES(id, name, xsimd_arch, cpu_features)                    \
+#define KUTLOG_CHECK_CPU_FEATURES(id, name, xsimd_arch, cpu_features, ...)             \
   static_assert(all_words(cpu_features, known),                                       \
                 "cmake/KutlogArchs.cmake: arch " name " requires a CPU feature that " \
                 "src/cpu_features.cpp does not detect");
@@ -124,12 +146,19 @@ KUTLOG_ARCHS(KUTLOG_CHECK_CPU_FEATURES)
 
 }  // namespace
 
-bool cpu_has_features(std::string_view features) {
-  return all_words(features, [](std::string_view name) {
-    for (std::size_t i = 0; i < kFeatures.size(); ++i)
-      if (kFeatures[i].name == name) return detected()[i];
+bool has_features(const CpuWords& words, std::string_view features) {
+  return all_words(features, [&](std::string_view name) {
+    for (const Feature& feature : kFeatures)
+      if (feature.name == name) return detect(feature, words);
     return false;
   });
 }
+
+const CpuWords& cpu_words() {
+  static const CpuWords words = read_words();
+  return words;
+}
+
+bool cpu_has_features(std::string_view features) { return has_features(cpu_words(), features); }
 
 }  // namespace kutlog::detail

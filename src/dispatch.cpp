@@ -1,5 +1,6 @@
-// Run-time choice of the arch, and the array functions that go through it. Compiled with the
-// baseline flags only: nothing here may execute an instruction the CPU might lack.
+// Run-time choice of the arch: the registry's table, the CPU's support, KUTLOG_ARCH, force_arch
+// and the active table the public functions (src/forwarders.cpp) call through. Compiled with
+// the baseline flags only: nothing here may execute an instruction the CPU might lack.
 #include "kutlog/dispatch.hpp"
 
 #include <array>
@@ -11,14 +12,11 @@
 #include <stdexcept>
 #include <string>
 
+#include "active_table.hpp"
 #include "arch/kernel_table.hpp"
 #include "cpu_features.hpp"
 #include "epicenter_check.hpp"
 #include "kutlog/lobe.hpp"
-#include "kutlog/math.hpp"
-#include "kutlog/reference.hpp"
-#include "kutlog/sampling.hpp"
-#include "kutlog/shade.hpp"
 
 namespace kutlog {
 namespace {
@@ -30,7 +28,7 @@ struct ArchEntry {
   const detail::KernelTable& (*kernel_table)();
 };
 constexpr ArchEntry kArchEntries[] = {
-#define KUTLOG_ARCH_ENTRY(id, name, xsimd_arch, cpu_features) \
+#define KUTLOG_ARCH_ENTRY(id, name, xsimd_arch, cpu_features, ...) \
   {name, cpu_features, &detail::kernel_table<Arch::id>},
     KUTLOG_ARCHS(KUTLOG_ARCH_ENTRY)
 #undef KUTLOG_ARCH_ENTRY
@@ -146,30 +144,6 @@ constexpr int kNotForced = -1;
 std::atomic<int> forced_arch{kNotForced};
 const detail::KernelTable& table_of(Arch arch) { return entry(arch).kernel_table(); }
 
-// The active arch's table, so that a call reads one pointer (a one-element eval spent two
-// fifths of its time going through active_arch() to its table), as its LobeArrayKernels: what
-// Lobe's inline array eval reads (kutlog/lobe.hpp). Set by force_arch, cleared by reset_arch,
-// filled on first use after either. Stored with release and loaded with acquire: the thread
-// that fills it may be the one that built the table (a function-local static), and a relaxed
-// load would let another thread read the table through the pointer before it sees the
-// table's contents (a data race ThreadSanitizer reported, tests/test_threads.cpp; on x86-64
-// an acquire load is the same instruction, on AArch64 an ldar instead of an ldr).
-[[gnu::noinline, gnu::cold]] const detail::KernelTable& fill_active_table() {
-  const detail::KernelTable* table = &table_of(active_arch());
-  const detail::LobeArrayKernels* expected = nullptr;  // a force_arch since then wins
-  return detail::active_lobe_loops.compare_exchange_strong(
-             expected, table, std::memory_order_acq_rel, std::memory_order_acquire)
-             ? *table
-             : static_cast<const detail::KernelTable&>(*expected);
-}
-
-// Inlined into every entry point below: one load and one test.
-inline const detail::KernelTable& active_table() {
-  const detail::LobeArrayKernels* loops =
-      detail::active_lobe_loops.load(std::memory_order_acquire);
-  return loops ? static_cast<const detail::KernelTable&>(*loops) : fill_active_table();
-}
-
 }  // namespace
 
 std::atomic<const detail::LobeArrayKernels*> detail::active_lobe_loops{nullptr};
@@ -179,6 +153,18 @@ std::string_view arch_name(Arch arch) { return entry(arch).name; }
 Arch parse_arch(std::string_view name) {
   if (const std::optional<Arch> arch = find_arch(name)) return *arch;
   throw std::invalid_argument(unknown_arch_message(name));
+}
+
+// The active table is a pointer, set by force_arch, cleared by reset_arch, filled here on first
+// use after either. Release and acquire: the thread reading it may not be the one that built
+// the table it points to (a function-local static).
+const detail::KernelTable& detail::fill_active_table() {
+  const detail::KernelTable* table = &table_of(active_arch());
+  const detail::LobeArrayKernels* expected = nullptr;  // a force_arch since then wins
+  return detail::active_lobe_loops.compare_exchange_strong(
+             expected, table, std::memory_order_acq_rel, std::memory_order_acquire)
+             ? *table
+             : static_cast<const detail::KernelTable&>(*expected);
 }
 
 bool arch_supported(Arch arch) { return cpu_view().support[static_cast<std::size_t>(arch)]; }
@@ -227,85 +213,6 @@ const detail::LobeArrayKernels* detail::fused_lobe_array_kernels() {
   for (Arch arch : kCompiledArchs)
     if (arch_supported(arch) && table_of(arch).fused_fma) return &table_of(arch);
   return nullptr;
-}
-
-namespace math {
-void acos_u10(const float* x, float* out, std::size_t count) {
-  active_table().acos_u10(x, out, count);
-}
-void cos_u10(const float* x, float* out, std::size_t count) {
-  active_table().cos_u10(x, out, count);
-}
-void cos_halfpi_u10(const float* x, float* out, std::size_t count) {
-  active_table().cos_halfpi_u10(x, out, count);
-}
-void exp_u10(const float* x, float* out, std::size_t count) {
-  active_table().exp_u10(x, out, count);
-}
-void log_u10(const float* x, float* out, std::size_t count) {
-  active_table().log_u10(x, out, count);
-}
-void pow_u10(const float* x, const float* y, float* out, std::size_t count) {
-  active_table().pow_u10(x, y, out, count);
-}
-void pow_u10(const float* x, float y, float* out, std::size_t count) {
-  active_table().pow_scalar_u10(x, y, out, count);
-}
-}  // namespace math
-
-void Lobe::eval_out_of_line(const float* t, float* out, std::size_t count, Variant variant,
-                            Normalization normalization) const noexcept {
-  const detail::KernelTable& table = active_table();
-  const LobeKernel& chosen = kernel(variant, normalization, table.fused_fma);
-  table.of(chosen)(chosen, t, out, count);
-}
-void PerLaneLobe::eval(const float* t, const float* n, float* out, std::size_t count,
-                       Normalization normalization) const noexcept {
-  active_table().kutlog_per_lane(kernel_, normalization == Normalization::exact_coef, t, n, out,
-                                 count);
-}
-void PowerPoly::eval(const float* t, float* out, std::size_t count) const noexcept {
-  active_table().power_poly(kernel_, t, out, count);
-}
-void blinn_phong_xsimd(const float* t, float* out, std::size_t count, float n, float scale) {
-  ref::validate_exponent(n);
-  active_table().blinn_phong_xsimd(t, n, scale, out, count);
-}
-void blinn_phong_u10(const float* t, float* out, std::size_t count, float n, float scale) {
-  ref::validate_exponent(n);
-  active_table().blinn_phong_u10(t, n, scale, out, count);
-}
-void schlick(const float* t, float* out, std::size_t count, float n) {
-  ref::validate_exponent(n);
-  active_table().schlick(t, n, out, count);
-}
-
-void LobeSampler::sample(const float* u1, const float* u2, DirectionSamples out,
-                         std::size_t count) const noexcept {
-  active_table().sample_lobe(kernel_, u1, u2, out, count);
-}
-
-SampledDirection LobeSampler::sample(float u1, float u2) const noexcept {
-  return active_table().sample_one(kernel_, u1, u2);
-}
-
-void shade(const Lobe& lobe, Vectors normal, Vectors to_light, Vectors to_viewer, float* out,
-           std::size_t count, const std::uint8_t* mask, ShadeOptions options) {
-  const detail::KernelTable& table = active_table();
-  table.shade_vectors(lobe.kernel(options.variant, options.normalization, table.fused_fma),
-                      options, normal, to_light, to_viewer, out, count, mask);
-}
-void shade(const Lobe& lobe, Vectors normal, Direction to_light, Direction to_viewer, float* out,
-           std::size_t count, const std::uint8_t* mask, ShadeOptions options) {
-  const detail::KernelTable& table = active_table();
-  table.shade_directions(lobe.kernel(options.variant, options.normalization, table.fused_fma),
-                         options, normal, to_light, to_viewer, out, count, mask);
-}
-void shade(const Lobe& lobe, const float* t, const float* n_dot_l, float* out, std::size_t count,
-           const std::uint8_t* mask, ShadeOptions options) {
-  const detail::KernelTable& table = active_table();
-  table.shade_cosines(lobe.kernel(options.variant, options.normalization, table.fused_fma),
-                      options, t, n_dot_l, out, count, mask);
 }
 
 }  // namespace kutlog

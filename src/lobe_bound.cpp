@@ -40,14 +40,6 @@ Interval times(Interval a, Interval b) {
           std::max(std::max(p1, p2), std::max(p3, p4))};
 }
 
-// base^exponent by squaring (exponent >= 0): about 2 log2(exponent) roundings.
-double integer_power(double base, int exponent) {
-  double power = 1;
-  for (; exponent > 0; exponent >>= 1, base *= base)
-    if (exponent & 1) power *= base;
-  return power;
-}
-
 // Horner's rule for sum c_i x^i with x in an interval, each operation rounded: bounds on the
 // magnitude of the exact value and on the error of the computed one against it. The exact
 // partial sums are carried as intervals, so each rounding is bounded by the ulp of what it
@@ -225,7 +217,7 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
       const double w_q = w_hi * q_magnitude;
       const double base_error = w_hi * q_error + unit * (w_q + 1 + w_q);
       const double base_hi = profile.base[j] + base_error;
-      const double power_hi = integer_power(base_hi, kernel.k - 1);
+      const double power_hi = detail::integer_power(base_hi, kernel.k - 1);
       error = scale * (kernel.k * power_hi * base_error + 14 * unit * power_hi * base_hi) +
               unit * scale * power_hi * base_hi;
     }

@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "kutlog/detail/float_ulp.hpp"
 #include "kutlog/lobe.hpp"
 #include "polynomial_fit.hpp"
 
@@ -71,13 +72,5 @@ struct CertifiedError {
 CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
                                const QuotientFit& fit, double scale, const LobeProfile& profile,
                                const CertifiedError& limit = {INFINITY, INFINITY});
-
-// The ulp of a float of magnitude `value` (subnormals included).
-// The setup calls it about a million times a second: the exponent is read from the bits.
-inline double ulp_of_float(double value) {
-  const int biased = int(std::bit_cast<std::uint64_t>(std::fabs(value)) >> 52);  // 0 for 0
-  const int exponent = std::max(biased - 1023, -126);
-  return std::bit_cast<double>(std::uint64_t(exponent - 23 + 1023) << 52);
-}
 
 }  // namespace kutlog::detail

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "kutlog/detail/integer_power.hpp"
+
 namespace kutlog::ref {
 namespace {
 
@@ -15,13 +17,6 @@ namespace {
   std::snprintf(shown, sizeof shown, "%.17g", value);
   throw std::invalid_argument(std::string("kutlog: ") + name + " = " + shown + " is invalid; " +
                               name + " must be " + range);
-}
-
-double power_of_integer(double base, int exponent) {
-  double result = 1.0;
-  for (; exponent > 0; exponent >>= 1, base *= base)
-    if (exponent & 1) result *= base;
-  return result;
 }
 
 // The data rule shared by the lobes: NaN passes through, t <= 0 is below the horizon, and t
@@ -106,7 +101,7 @@ double KutlogLobe::integration_limit() const { return std::min(cutoff_angle_, pi
 double KutlogLobe::lobe_above_horizon(double x) const {
   if (x >= cutoff_angle_) return 0;
   const double scaled_cos = std::cos(c_ * x);
-  return scaled_cos > 0 ? power_of_integer(scaled_cos, k_) : 0;
+  return scaled_cos > 0 ? detail::integer_power(scaled_cos, k_) : 0;
 }
 
 double KutlogLobe::eval_angle(double x) const {

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "common/lobe_errors.hpp"
+#include "common/names.hpp"
 #include "common/ulp.hpp"
 #include "kutlog/accuracy.hpp"
 #include "kutlog/dispatch.hpp"
@@ -131,10 +132,9 @@ TEST_P(LobePerArch, PowerPolyWithinItsBoundWithTheDataRule) {
         }
       }
     EXPECT_GE(largest, bound / 4) << "a loose bound";
-    record_max(std::string("power_poly_") + (variant == Variant::precise ? "precise" : "fast"),
-               largest);
+    record_max("power_poly_" + std::string(variant_name(variant)), largest);
     std::printf("PowerPoly %s: largest error %.3g of the peak (bound %.3g)\n",
-                variant == Variant::precise ? "precise" : "fast", largest, bound);
+                variant_name(variant).data(), largest, bound);
   }
 }
 

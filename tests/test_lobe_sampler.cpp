@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "chi_square.hpp"
+#include "common/names.hpp"
 #include "expect_invalid.hpp"
 #include "kutlog/accuracy.hpp"
 #include "kutlog/dispatch.hpp"
@@ -52,8 +53,6 @@ namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr LobeUse kUses[] = {LobeUse::microfacet, LobeUse::phong};
-
-std::string use_name(LobeUse use) { return use == LobeUse::microfacet ? "microfacet" : "phong"; }
 
 // Samples of one sampler as arrays.
 struct Samples {

@@ -97,7 +97,7 @@ TEST_P(Exhaustive, EveryFloatOfTheDomainWithinTheBound) {
 
 INSTANTIATE_TEST_SUITE_P(
     Kernel, Exhaustive,
-    testing::Combine(testing::Values("acos", "cos", "cos_halfpi", "exp", "log", "pow"),
+    testing::Combine(testing::ValuesIn(tools::math_function_names()),
                      testing::ValuesIn(supported_archs())),
     [](const testing::TestParamInfo<Case>& info) {
       return std::get<0>(info.param) + "_" +

@@ -1,4 +1,4 @@
-// The primitives of kutlog::simd::portable (kutlog/simd/portable.hpp), lane by lane against
+// The primitives of kutlog::simd::portable (kutlog/simd/detail/portable.hpp), lane by lane against
 // C++'s scalar operations, special values included: the kernels' accuracy tests cover what
 // the kernels call, this covers the rest of what xsimd's API can reach and the semantics the
 // kernels rely on (NaN in min and max, ties to even, -0).

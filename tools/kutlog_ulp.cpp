@@ -170,18 +170,19 @@ int measure_power_poly(const std::vector<kutlog::Arch>& archs,
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::vector<std::string> functions = math_function_names();
+  std::string function_domains;
+  for (const kutlog::AccuracyBound& bound : kutlog::kAccuracyBounds)
+    function_domains += fmt::format("\n  {} {}", bound.function, bound.domain);
   CLI::App app(
       "Measure the ULP error of kutlog's SIMD math kernels over every float of their domains,\n"
-      "per arch, against glibc's double-precision functions. Functions: acos [-1, 1],\n"
-      "cos [-pi, pi], cos_halfpi [0, pi/2], exp [-104, 89], log (0, FLT_MAX], and pow: every x\n"
-      "in (0, 2^8] for each y in {1, 2, 5, 10, 50, 100, 500, 1000, 5000}, plus random pairs.\n"
-      "--function kutlog measures the F_kutlog lobe kernels instead, over every float t in\n"
+      "per arch, against glibc's double-precision functions. Functions:" + function_domains +
+      "\n--function kutlog measures the F_kutlog lobe kernels instead, over every float t in\n"
       "[-1, 1], for each --n, --k, --q: max_abs_err relative to the lobe's peak (1, or coef for\n"
       "kutlog_normalized), max_ulp_epicenter where the lobe is >= 0.6 of its peak.\n"
       "--function pow_poly measures kutlog::PowerPoly, the benchmarks' polynomial t^n, in the\n"
       "same units for each --n and --variant.",
       "kutlog-ulp");
-  std::vector<std::string> functions{"acos", "cos", "cos_halfpi", "exp", "log", "pow"};
   std::vector<std::string> arch_names{"all"};
   std::string format_name = "text";
   std::uint64_t random_pairs = 10'000'000;
@@ -253,9 +254,9 @@ int main(int argc, char** argv) {
     }
     for (const std::string& name : functions)
       if (name != "pow" && !find_unary_function(name))
-        throw std::invalid_argument("unknown function '" + name +
-                                    "'; valid: acos, cos, cos_halfpi, exp, log, pow, kutlog, "
-                                    "pow_poly");
+        throw std::invalid_argument("unknown function '" + name + "'; valid: " +
+                                    fmt::format("{}", fmt::join(math_function_names(), ", ")) +
+                                    ", kutlog, pow_poly");
     if (profile && functions.size() != 1)
       throw std::invalid_argument("--profile measures one --function at a time");
     if (profile && summary) throw std::invalid_argument("--profile and --summary exclude each other");

@@ -7,10 +7,13 @@
 #include <string_view>
 
 #include "kutlog/api.hpp"
+#include "kutlog/archs.hpp"
+#include "kutlog/detail/math_functions.hpp"
 
 KUTLOG_API_BEGIN
 namespace kutlog {
 
+// The platforms with a measured column, over the archs the registry has for each.
 enum class Platform { x86_64, aarch64 };
 inline constexpr Platform kPlatform =
 #if defined(__aarch64__)
@@ -34,10 +37,10 @@ struct Measurement {
   std::string_view command;
 };
 inline constexpr Measurement kMeasurements[] = {
-    {Platform::x86_64, "avx512 avx2 sse4.1", "exhaustive",
+    {Platform::x86_64, KUTLOG_ARCH_NAMES_X86_64, "exhaustive",
      "every float of each math kernel's domain, every float t of each lobe's support (below)",
      "kutlog-ulp --arch all --summary; ctest --test-dir build -L exhaustive"},
-    {Platform::aarch64, "neon64", "sampled",
+    {Platform::aarch64, KUTLOG_ARCH_NAMES_AARCH64, "sampled",
      "under qemu-aarch64 (KUTLOG_SWEEP_SAMPLES=2^24): 2^24 floats evenly spread over each "
      "math kernel's domain plus every float of its hardest ranges (tests/test_math_exhaustive.cpp); "
      "2^24 floats of t shared among the lobes of each sweep, over their supports and as many over "
@@ -59,16 +62,12 @@ struct AccuracyBound {
   constexpr double max_ulp() const { return measured_ulp.on(kPlatform); }
 };
 
+// One row per kernel of kutlog/detail/math_functions.hpp.
 inline constexpr AccuracyBound kAccuracyBounds[] = {
-    {"acos_u10", "acos", "precise", 1.0, {0.65, 0.61}, "[-1, 1]", -1.0f, 1.0f},
-    {"cos_u10", "cos", "precise", 1.0, {0.81, 0.81}, "[-pi, pi]", -3.14159274f, 3.14159274f},
-    {"cos_halfpi_u10", "cos_halfpi", "precise", 1.0, {0.81, 0.81}, "[0, pi/2]", 0.0f, 1.57079637f},
-    {"exp_u10", "exp", "precise", 1.0, {0.51, 0.51}, "[-104, 89] (0 or inf beyond)", -104.0f, 89.0f},
-    {"log_u10", "log", "precise", 1.0, {0.67, 0.64}, "(0, FLT_MAX] (inf for inf)", 0x1p-149f,
-     3.40282347e38f},
-    {"pow_u10", "pow", "precise", 1.0, {0.54, 0.52},
-     "x in (0, 2^8], y in {1, 2, 5, 10, 50, 100, 500, 1000, 5000}; 10^7 random (x, y)", 0x1p-149f,
-     256.0f},
+#define KUTLOG_ACCURACY_BOUND(function, kernel, promised, x86_64, aarch64, domain, lo, hi, ...) \
+  {#kernel, #function, "precise", promised, {x86_64, aarch64}, domain, lo, hi},
+    KUTLOG_MATH_FUNCTIONS(KUTLOG_ACCURACY_BOUND)
+#undef KUTLOG_ACCURACY_BOUND
 };
 
 // The lobe kernels: abs error |out - scale F| / scale everywhere, ulps of scale F where F >= 0.6

@@ -16,13 +16,13 @@ namespace kutlog {
 
 // The registry's archs (cmake/KutlogArchs.cmake), best first; the last is the baseline.
 enum class Arch {
-#define KUTLOG_ARCH_ENUMERATOR(id, name, xsimd_arch, cpu_features) id,
+#define KUTLOG_ARCH_ENUMERATOR(id, ...) id,
   KUTLOG_ARCHS(KUTLOG_ARCH_ENUMERATOR)
 #undef KUTLOG_ARCH_ENUMERATOR
 };
 
 inline constexpr std::array kCompiledArchs = {
-#define KUTLOG_ARCH_VALUE(id, name, xsimd_arch, cpu_features) Arch::id,
+#define KUTLOG_ARCH_VALUE(id, ...) Arch::id,
     KUTLOG_ARCHS(KUTLOG_ARCH_VALUE)
 #undef KUTLOG_ARCH_VALUE
 };

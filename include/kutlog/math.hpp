@@ -1,23 +1,27 @@
-// kutlog/math.hpp: the kernels of kutlog/simd/math.hpp over arrays, dispatched at run time,
-// with their contracts. Any count and alignment; out may equal an input, else no overlap.
+// kutlog/math.hpp: the kernels of kutlog/simd/math.hpp (listed in
+// kutlog/detail/math_functions.hpp) over arrays, dispatched at run time, with their contracts.
+// Any count and alignment; out may equal an input, else no overlap.
 #pragma once
 
 #include <cstddef>
 
 #include "kutlog/api.hpp"
+#include "kutlog/detail/math_functions.hpp"
 
 KUTLOG_API_BEGIN
 namespace kutlog::math {
 
-void acos_u10(const float* x, float* out, std::size_t count);
-void cos_u10(const float* x, float* out, std::size_t count);
-void cos_halfpi_u10(const float* x, float* out, std::size_t count);
-void exp_u10(const float* x, float* out, std::size_t count);
-void log_u10(const float* x, float* out, std::size_t count);
-// out[i] = x[i]^y[i]
-void pow_u10(const float* x, const float* y, float* out, std::size_t count);
-// out[i] = x[i]^y
-void pow_u10(const float* x, float y, float* out, std::size_t count);
+// kernel(x, out, count) per unary kernel; kernel(x, y, out, count), out[i] = kernel(x[i], y[i]),
+// and kernel(x, y, out, count), out[i] = kernel(x[i], y), per binary one.
+#define KUTLOG_DECLARE_UNARY(function, kernel, ...) \
+  void kernel(const float* x, float* out, std::size_t count);
+#define KUTLOG_DECLARE_BINARY(function, kernel, ...)                            \
+  void kernel(const float* x, const float* y, float* out, std::size_t count); \
+  void kernel(const float* x, float y, float* out, std::size_t count);
+KUTLOG_UNARY_MATH_FUNCTIONS(KUTLOG_DECLARE_UNARY)
+KUTLOG_BINARY_MATH_FUNCTIONS(KUTLOG_DECLARE_BINARY)
+#undef KUTLOG_DECLARE_UNARY
+#undef KUTLOG_DECLARE_BINARY
 
 }  // namespace kutlog::math
 KUTLOG_API_END

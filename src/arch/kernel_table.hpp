@@ -4,6 +4,7 @@
 #include <cstddef>
 
 #include "kutlog/dispatch.hpp"
+#include "kutlog/detail/math_functions.hpp"
 #include "kutlog/lobe.hpp"
 #include "kutlog/sampling.hpp"
 #include "kutlog/shade.hpp"
@@ -35,9 +36,14 @@ using SampleOneKernel = SampledDirection (*)(const SamplerKernel&, float u1, flo
 // A LobeArrayKernels first (its fused_fma: which of a Lobe's kernels this arch runs), so that
 // the active table is what detail::active_lobe_loops points to (kutlog/lobe.hpp).
 struct KernelTable : LobeArrayKernels {
-  UnaryArrayKernel acos_u10, cos_u10, cos_halfpi_u10, exp_u10, log_u10;
-  BinaryArrayKernel pow_u10;
-  BinaryScalarArrayKernel pow_scalar_u10;
+#define KUTLOG_UNARY_SLOT(function, kernel, ...) UnaryArrayKernel kernel;
+#define KUTLOG_BINARY_SLOTS(function, kernel, ...) \
+  BinaryArrayKernel kernel;                       \
+  BinaryScalarArrayKernel kernel##_scalar;
+  KUTLOG_UNARY_MATH_FUNCTIONS(KUTLOG_UNARY_SLOT)
+  KUTLOG_BINARY_MATH_FUNCTIONS(KUTLOG_BINARY_SLOTS)
+#undef KUTLOG_UNARY_SLOT
+#undef KUTLOG_BINARY_SLOTS
   PerLaneArrayKernel kutlog_per_lane;
   PowerLobeArrayKernel blinn_phong_xsimd, blinn_phong_u10;
   PowerPolyArrayKernel power_poly;
@@ -47,6 +53,8 @@ struct KernelTable : LobeArrayKernels {
   ShadeCosinesKernel shade_cosines;
   SampleArrayKernel sample_lobe;
   SampleOneKernel sample_one;
+  // Whether simd::mul_add rounds once on this arch, as measured (tests/test_cpu_features.cpp).
+  bool (*mul_add_rounds_once)();
 };
 
 // The table of one arch: specialized by src/arch/kernels.cpp, which CMake compiles once per

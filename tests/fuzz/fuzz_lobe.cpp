@@ -180,7 +180,7 @@ void fuzz_baseline(FuzzedDataProvider& data, int which) {
         // at most twice pow's in ulps) and pow's absolute 2^-150 at subnormal results.
         double ulps = which == 2 ? kSchlickMaxUlp : scale == 1 ? pow_ulp : 2 * pow_ulp + 0.5;
         if (which == 1 && scale != 1)
-          ulps += scale * 0x1p-150 / std::ldexp(1.0, std::max(std::ilogb(expected), -126) - 23);
+          ulps += scale * 0x1p-150 / detail::ulp_of_float(expected);
         const double error = tools::ulp_error(out, expected);
         if (!(error <= ulps))
           fail(call, lane_message(i, "%g ulp from %.17g, bound %g", error, expected, ulps));

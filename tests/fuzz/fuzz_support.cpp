@@ -243,13 +243,6 @@ const LobeUnderTest* lobe_under_test(const LobeParameters& parameters, const Cal
   return found;
 }
 
-std::string_view variant_name(Variant variant) {
-  return variant == Variant::precise ? "precise" : "fast";
-}
-std::string_view normalization_name(Normalization normalization) {
-  return normalization == Normalization::none ? "none" : "exact_coef";
-}
-
 Range lobe_range(const LobeUnderTest& lobe, Variant variant, Normalization normalization,
                  double t_lo, double t_hi) {
   const double scale = normalization == Normalization::exact_coef ? lobe.lobe.coef_exact() : 1.0;

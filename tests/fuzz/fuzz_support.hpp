@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "common/guarded_output.hpp"
+#include "common/names.hpp"
 #include "kutlog/dispatch.hpp"
 #include "kutlog/lobe.hpp"
 #include "kutlog/reference.hpp"
@@ -203,8 +204,5 @@ Range lobe_range(const LobeUnderTest& lobe, Variant variant, Normalization norma
 // Whether a float product `out` of a value in `lobe` and a factor in [factor_lo, factor_hi]
 // (>= 0) is possible, allowing its one rounding (and overflow to inf, and inf * 0 = NaN).
 bool product_within(float out, Range lobe, double factor_lo, double factor_hi);
-
-std::string_view variant_name(Variant variant);
-std::string_view normalization_name(Normalization normalization);
 
 }  // namespace kutlog::fuzz

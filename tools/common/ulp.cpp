@@ -117,8 +117,8 @@ void ErrorStats::merge(const ErrorStats& other) {
   inputs += other.inputs;
 }
 
-// Each function's sweep domain is its row of kutlog/accuracy.hpp: one table for the bounds, the
-// domains they hold on, the tests and this tool.
+// Each function's sweep domain is its row of kutlog/accuracy.hpp, made from the one list of
+// kutlog/detail/math_functions.hpp.
 UnaryFunction unary_function(std::string_view name, UnaryArray array, double (*reference)(double)) {
   const AccuracyBound bound = *find_accuracy_bound(name);
   return {bound.function, bound.kernel, array, reference, bound.sweep_lo, bound.sweep_hi,
@@ -127,13 +127,19 @@ UnaryFunction unary_function(std::string_view name, UnaryArray array, double (*r
 
 const std::vector<UnaryFunction>& unary_functions() {
   static const std::vector<UnaryFunction> functions = {
-      unary_function("acos", &math::acos_u10, [](double x) { return std::acos(x); }),
-      unary_function("cos", &math::cos_u10, [](double x) { return std::cos(x); }),
-      unary_function("cos_halfpi", &math::cos_halfpi_u10, [](double x) { return std::cos(x); }),
-      unary_function("exp", &math::exp_u10, [](double x) { return std::exp(x); }),
-      unary_function("log", &math::log_u10, [](double x) { return std::log(x); }),
+#define KUTLOG_UNARY_FUNCTION(function, kernel, promised, x86_64, aarch64, domain, lo, hi, peer, \
+                              ...)                                                             \
+  unary_function(#function, &math::kernel, [](double x) { return std::peer(x); }),
+      KUTLOG_UNARY_MATH_FUNCTIONS(KUTLOG_UNARY_FUNCTION)
+#undef KUTLOG_UNARY_FUNCTION
   };
   return functions;
+}
+
+std::vector<std::string> math_function_names() {
+  std::vector<std::string> names;
+  for (const AccuracyBound& bound : kAccuracyBounds) names.emplace_back(bound.function);
+  return names;
 }
 
 const UnaryFunction* find_unary_function(std::string_view name) {

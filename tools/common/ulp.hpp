@@ -16,6 +16,8 @@
 #include <string_view>
 #include <vector>
 
+#include "kutlog/detail/float_ulp.hpp"
+
 namespace kutlog::tools {
 
 // |computed - reference| in units of the float ulp at the reference (2^(e-23), e the
@@ -27,10 +29,7 @@ double ulp_error_special(float computed, double reference);
 inline double ulp_error(float computed, double reference) {
   if (!std::isfinite(computed) || !std::isfinite(reference) || reference == 0)
     return ulp_error_special(computed, reference);
-  // 1 / ulp = 2^(23 - e), e = max(binary exponent of the reference, -126), from the bits.
-  const int exponent =
-      std::max(int((std::bit_cast<std::uint64_t>(reference) >> 52) & 0x7ff) - 1023, -126);
-  const double inverse_ulp = std::bit_cast<double>(std::uint64_t(23 - exponent + 1023) << 52);
+  const double inverse_ulp = detail::power_of_two(-detail::float_ulp_exponent(reference));
   return std::fabs(double(computed) - reference) * inverse_ulp;
 }
 
@@ -82,6 +81,8 @@ struct UnaryFunction {
   std::string_view domain_text;
 };
 const std::vector<UnaryFunction>& unary_functions();
+// Every math kernel's function name (kutlog/detail/math_functions.hpp), unary and binary.
+std::vector<std::string> math_function_names();
 const UnaryFunction* find_unary_function(std::string_view name);
 
 // The exponents of the exhaustive pow sweep, each over every float x in (0, 1] and [1, 2^8].

@@ -1,5 +1,5 @@
 // kutlog/detail/lobe_dispatch.hpp: the per-arch tables of lobe loops that Lobe's inline array
-// eval reads (filled by src/arch/, chosen by src/dispatch.cpp).
+// eval reads (filled by src/arch/lobe_loops.hpp, chosen by src/dispatch.cpp).
 #pragma once
 
 #include <atomic>

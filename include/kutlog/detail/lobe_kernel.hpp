@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "kutlog/api.hpp"
+#include "kutlog/detail/integer_power.hpp"
 
 KUTLOG_API_BEGIN
 namespace kutlog {
@@ -101,12 +102,7 @@ struct LobeKernel {
       case 3: return square * base;
       case 4: return square * square;
       case 5: return square * square * base;
-      default: {
-        double power = 1.0, factor = base;
-        for (int e = k; e > 0; e >>= 1, factor *= factor)
-          if (e & 1) power *= factor;
-        return power;
-      }
+      default: return detail::integer_power(base, k);
     }
   }
 };
@@ -128,9 +124,7 @@ struct PerLaneKernel {
     const double w = t < 1.0f ? 1.0 - double(t) : 0.0;
     const double v = n_clamped * horner(h, h_degree, y_offset) * (w * horner(g, g_degree, w));
     if (t <= t_guard || v >= double(v_cut)) return 0.0f;
-    double base = 1.0 - v * horner(r, r_degree, v - double(v_center)), power = 1.0;
-    for (int e = k; e > 0; e >>= 1, base *= base)
-      if (e & 1) power *= base;
+    double power = detail::integer_power(1.0 - v * horner(r, r_degree, v - double(v_center)), k);
     power = power < 0.0 ? 0.0 : power > 1.0 ? 1.0 : power;
     return float(normalized ? power * (n_clamped * horner(coef_k, k_degree, y_offset)) : power);
   }

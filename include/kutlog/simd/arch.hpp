@@ -9,7 +9,7 @@ namespace kutlog::simd {
 
 template <Arch arch>
 struct XsimdArchOf;
-#define KUTLOG_XSIMD_ARCH_OF(id, name, xsimd_arch_type, cpu_features) \
+#define KUTLOG_XSIMD_ARCH_OF(id, name, xsimd_arch_type, ...)          \
   template <>                                                          \
   struct XsimdArchOf<Arch::id> {                                       \
     using type = xsimd_arch_type;                                      \

@@ -1,6 +1,5 @@
-// kutlog/simd/constants.hpp: the polynomial cores and constants of kutlog's math, as plain
-// numbers with no xsimd, so that the SIMD kernels (kutlog/simd/math.hpp) and the scalar code
-// beside them (the one-sample path of the lobe sampler, src/sampling.cpp) read the same cores.
+// kutlog/simd/constants.hpp: the math kernels' constants and polynomial cores (lowest degree
+// first, from tools/fit/fit_polynomials.py), shared with scalar code, so without xsimd.
 #pragma once
 
 #include <array>
@@ -9,7 +8,6 @@
 namespace kutlog::simd {
 
 namespace constants {
-// Polynomial cores, lowest degree first; fitted by tools/fit/fit_polynomials.py.
 // asin(s) = s + s*z*P(z), z = s^2 in [0, 1/4].
 inline constexpr std::array<float, 6> kAsin = {1.666666567e-01f, 7.500094175e-02f,
                                                4.459940270e-02f, 3.110066243e-02f,
@@ -24,10 +22,7 @@ inline constexpr std::array<float, 11> kLog = {
     3.333333433e-01f,  -2.500000000e-01f, 1.999997348e-01f,  -1.666671932e-01f,
     1.428788602e-01f,  -1.249992773e-01f, 1.104825065e-01f,  -9.931553155e-02f,
     9.804564714e-02f,  -9.727659076e-02f, 5.555094406e-02f};
-// Double cores of exp and pow: log(m) = 2s + s*z*A(z), s = (m-1)/(m+1), z = s^2 <= 0.0295;
-// exp(r) = 1 + r + r^2*E(r), |r| <= ln(2)/2.
-// Their errors enter t = y log x scaled down (by z <= 0.03 and r^2 <= 0.12): 2^-35.8 and
-// 2^-32.5 relative, against the 2^-24 of a float ulp.
+// Double: log(m) = 2s + s*z*A(z), s = (m-1)/(m+1); exp(r) = 1 + r + r^2*E(r), |r| <= ln2/2.
 inline constexpr std::array<double, 4> kPowLog = {
     6.66666665544970893e-01, 4.00001218398061242e-01, 2.85508208159606647e-01,
     2.33304672163038351e-01};
@@ -37,13 +32,13 @@ inline constexpr std::array<double, 6> kExpDouble = {
 
 // pi/2 and pi as float + float; pi/2 also in three parts whose products by |n| <= 2 are exact.
 inline constexpr float kHalfPiHi = 1.57079637e+00f, kHalfPiLo = -4.37113883e-08f;
-inline constexpr float kHalfPiLo2 = -1.71512451e-15f;  // pi/2 - kHalfPiHi - kHalfPiLo
+inline constexpr float kHalfPiLo2 = -1.71512451e-15f;
 inline constexpr float kPiHi = 3.14159274e+00f, kPiLo = -8.74227766e-08f;
 inline constexpr float kTwoOverPi = 6.36619747e-01f;
-// ln 2 = kLn2Hi + kLn2Lo; kLn2Hi has 15 significant bits, so k * kLn2Hi is exact for |k| < 2^9.
+// ln 2 = kLn2Hi + kLn2Lo, k * kLn2Hi exact for |k| < 2^9.
 inline constexpr float kLn2Hi = 6.93145752e-01f, kLn2Lo = 1.42860677e-06f;
 inline constexpr std::int32_t kSqrtHalfBits = 0x3f3504f3;  // bits of sqrt(1/2)
-inline constexpr float kSmallestNormal = 1.17549435e-38f;  // 2^-126
+inline constexpr float kSmallestNormal = 1.17549435e-38f;
 inline constexpr float kTwoTo23 = 8388608.0f;
 }  // namespace constants
 

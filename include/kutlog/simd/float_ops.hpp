@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <type_traits>
 
+#include "kutlog/archs.hpp"
 #include "kutlog/simd/xsimd.hpp"
 
 namespace kutlog::simd {
@@ -22,20 +23,22 @@ using doubles = xsimd::batch<double, Arch>;
 template <class Arch>
 using ints = xsimd::batch<std::int32_t, Arch>;
 
-// True when mul_add below is one fused instruction (one rounding) for this arch; elsewhere it
-// is a multiply and an add, two roundings, and the kernels take the FMA-free paths.
+// True when mul_add below is one fused instruction (one rounding) for this arch, as the arch
+// registry's FUSED_FMA field says (cmake/KutlogArchs.cmake) for the entry whose xsimd type Arch
+// is or derives from; elsewhere two roundings, and the kernels take the FMA-free paths.
 template <class Arch>
-inline constexpr bool has_fused_fma =
-    std::is_base_of_v<xsimd::fma3<xsimd::sse4_2>, Arch> ||
-    std::is_base_of_v<xsimd::fma3<xsimd::avx>, Arch> ||
-    std::is_base_of_v<xsimd::fma3<xsimd::avx2>, Arch> || std::is_base_of_v<xsimd::avx512f, Arch> ||
-    std::is_base_of_v<xsimd::neon64, Arch>;
+inline constexpr bool has_fused_fma = false
+#define KUTLOG_FUSED_FMA_OF(id, name, xsimd_arch, cpu_features, fused_fma) \
+  || (fused_fma && std::is_base_of_v<xsimd_arch, Arch>)
+    KUTLOG_ARCHS(KUTLOG_FUSED_FMA_OF);
+#undef KUTLOG_FUSED_FMA_OF
 
 // a * b + c, fused where the arch has FMA. xsimd 8.1 has no AVX-512 fma: its xsimd::fma there
 // is an unfused multiply and add, so AVX-512 gets the intrinsic here.
 template <class T, class Arch>
 inline xsimd::batch<T, Arch> mul_add(xsimd::batch<T, Arch> a, xsimd::batch<T, Arch> b,
                                      xsimd::batch<T, Arch> c) {
+  if constexpr (!has_fused_fma<Arch>) return a * b + c;  // as has_fused_fma promises
 #if XSIMD_WITH_AVX512F
   if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
     if constexpr (std::is_same_v<T, float>) return _mm512_fmadd_ps(a, b, c);
@@ -48,6 +51,7 @@ inline xsimd::batch<T, Arch> mul_add(xsimd::batch<T, Arch> a, xsimd::batch<T, Ar
 template <class T, class Arch>
 inline xsimd::batch<T, Arch> mul_sub(xsimd::batch<T, Arch> a, xsimd::batch<T, Arch> b,
                                      xsimd::batch<T, Arch> c) {
+  if constexpr (!has_fused_fma<Arch>) return a * b - c;  // as has_fused_fma promises
 #if XSIMD_WITH_AVX512F
   if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
     if constexpr (std::is_same_v<T, float>) return _mm512_fmsub_ps(a, b, c);
@@ -60,6 +64,7 @@ inline xsimd::batch<T, Arch> mul_sub(xsimd::batch<T, Arch> a, xsimd::batch<T, Ar
 template <class T, class Arch>
 inline xsimd::batch<T, Arch> neg_mul_add(xsimd::batch<T, Arch> a, xsimd::batch<T, Arch> b,
                                          xsimd::batch<T, Arch> c) {
+  if constexpr (!has_fused_fma<Arch>) return c - a * b;  // as has_fused_fma promises
 #if XSIMD_WITH_AVX512F
   if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
     if constexpr (std::is_same_v<T, float>) return _mm512_fnmadd_ps(a, b, c);

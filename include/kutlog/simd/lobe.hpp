@@ -1,13 +1,6 @@
-// kutlog/simd/lobe.hpp: the shading lobes as templates on xsimd batches of float.
-//
-//   kutlog_lobe: F_kutlog (or coef * F_kutlog) of a kutlog::Lobe, from t = cos x.
-//   blinn_phong_xsimd: t^n with xsimd::pow, what users have today (67 to 86 ULP at large n).
-//   blinn_phong_u10: t^n with pow_u10 (0.54 ULP).
-//   PreparedPowerPoly: t^n by 2^(n log2 t) with polynomials fitted per n (kutlog::PowerPoly).
-//   schlick: Schlick's rational approximation t / (n - n t + t).
-//
-// Every lobe follows the reference's data rule: t > 1 gives F(1), t <= 0 (and, for F_kutlog,
-// t <= cos(gran)) gives 0, NaN gives NaN. Contracts of F_kutlog: kutlog/lobe.hpp.
+// kutlog/simd/lobe.hpp: the shading lobes on xsimd float batches: kutlog_lobe (F_kutlog of a
+// kutlog::Lobe), the pow-based Blinn-Phong peers, PreparedPowerPoly and Schlick's. Each keeps
+// the reference's data rule: t > 1 gives F(1), t <= 0 (or below the cut) 0, NaN NaN.
 #pragma once
 
 #include <array>
@@ -20,7 +13,8 @@
 namespace kutlog::simd {
 
 namespace detail {
-// b^k for a small positive integer k known per call (a loop over its bits, not per lane).
+// b^k for a small positive integer k known per call (a loop over its bits, not per lane). Kept
+// apart from detail::integer_power: the certified double-form bound counts these products.
 template <class Batch>
 inline Batch integer_power(Batch base, int k) {
   Batch result(1.0);
@@ -29,8 +23,7 @@ inline Batch integer_power(Batch base, int k) {
   return result;
 }
 
-// min(upper, max(0, value)), NaN kept: x86's max and min return their second operand when
-// either is NaN, so value goes second. With upper = the peak, the lobes' hard contract.
+// min(upper, max(0, value)), NaN kept (x86's max and min return their second operand).
 template <class Batch>
 inline Batch clamp_zero_to(Batch value, Batch upper) {
   return xsimd::min(upper, xsimd::max(Batch(0), value));
@@ -48,14 +41,9 @@ constexpr LobeFinish lobe_finish(const LobeKernel& kernel) {
   return kernel.scale_lo != 0 ? LobeFinish::split : LobeFinish::plain;
 }
 
-// A LobeKernel with its constants broadcast once, for loops over many batches.
-// kDegree >= 0 fixes the float form's degree (kernel.degree must equal it): Horner's rule is
-// then unrolled with the coefficients in registers, not reloaded per step as in the generic
-// loop. kFinish other than `any` fixes the finish (it must equal
-// lobe_finish<Arch>(kernel)): a span of one batch then tests no flag. kClamped = false
-// leaves out the clamp to [0, scale_f], for a kernel whose setup proved it needless
-// (kernel.clamped false, polynomial form). The array functions switch once per call to the
-// fixed degree, finish and clamp (src/arch/array_kernels.hpp); batch users can do the same.
+// A LobeKernel with its constants broadcast once. kDegree >= 0 and kFinish other than `any`
+// must equal the kernel's (Horner unrolled, no flag tested); kClamped = false drops the clamp
+// where the setup proved it needless (kernel.clamped false). See src/arch/lobe_loops.hpp.
 template <class Arch, int kDegree = -1, LobeFinish kFinish = LobeFinish::any, bool kClamped = true>
 class PreparedLobe {
  public:
@@ -71,12 +59,8 @@ class PreparedLobe {
     for (std::size_t i = 0; i <= degree && i < q_.size(); ++i) q_[i] = F(kernel.q_f[i]);
   }
 
-  // Within [0, scale]: the clamp costs two instructions and removes the rounding below 0
-  // near the cut-off and above the peak that the polynomial alone may let through (where the
-  // setup proved it does not, kClamped = false runs without).
-  // A fixed degree is the polynomial form's (the base_power form runs with kDegree = -1).
-  // The float form always inlined: with two calls in one function (a span's whole batch and its
-  // partial one) GCC would call it out of line, its batches passed through memory.
+  // The clamp keeps roundings near the cut and the peak within [0, scale]. Always inlined:
+  // GCC would otherwise call it out of line, batches through memory.
   [[gnu::always_inline]] F operator()(F t) const {
     if constexpr (!kClamped) return float_form(t);
     if (kDegree >= 0 || kernel_.form == LobeKernel::Form::polynomial)
@@ -85,8 +69,7 @@ class PreparedLobe {
   }
 
  private:
-  // scale - w q(s), Horner in float on s = center - t; unrolled when the degree is a template
-  // argument. min(1, t) keeps NaN (x86's min returns its second operand when one is NaN).
+  // scale - w q(s), Horner in float on s = center - t; min(1, t) keeps NaN.
   [[gnu::always_inline]] F float_form(F t) const {
     const F clamped = xsimd::min(F(1.0f), t);
     const F w = F(1.0f) - clamped, s = center_ - clamped;
@@ -120,8 +103,7 @@ class PreparedLobe {
     return xsimd::select(t <= t_cut_, F(0.0f), value);
   }
 
-  // scale - w q, or scale + (scale_lo - w q), where t > t_cut (or t is NaN), else 0. AVX-512
-  // does it in one masked FMA (or add).
+  // scale - w q, or scale + (scale_lo - w q), where t > t_cut or NaN, else 0.
   [[gnu::always_inline]] F cut_at(F t, F w, F q) const {
 #if XSIMD_WITH_AVX512F
     if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
@@ -187,9 +169,7 @@ class PreparedPerLaneLobe {
   }
 
  private:
-  // (1 - v r)^k in double lanes, one rounding to float. In float, the base's rounding (2^-25
-  // near 1) would reach F multiplied by k: 8.6 ULP in the epicenter at k = 8, 3.3 2^-20 of
-  // the peak at k = 64; in double, 4 ULP and 0.25 2^-20 for every k up to 64.
+  // (1 - v r)^k in double lanes, rounded once: in float the base's rounding grows k-fold.
   F power_in_double(F v, F r) const {
     using D = doubles<Arch>;
     const Pair<D> v_halves = widen(v), r_halves = widen(r);

@@ -1,13 +1,12 @@
-// kutlog/simd/sampling.hpp: the F_kutlog lobe sampler of kutlog/sampling.hpp as a template on
-// xsimd batches of float, for users who inline it, and its one-sample path in scalar double,
-// a template on the arch for its fused multiply-add. The contract and the data rule are
-// kutlog/sampling.hpp's.
+// kutlog/simd/sampling.hpp: kutlog/sampling.hpp's lobe sampler on xsimd float batches, and its
+// one-sample path in double (on the arch for its FMA); the contract is kutlog/sampling.hpp's.
 #pragma once
 
 #include <cmath>
 #include <cstdint>
 #include <limits>
 
+#include "kutlog/detail/integer_power.hpp"
 #include "kutlog/sampling.hpp"
 #include "kutlog/simd/lobe.hpp"
 #include "kutlog/simd/math.hpp"
@@ -23,9 +22,8 @@ struct SampleBatch {
 namespace detail {
 inline constexpr float kLargestBelowOne = 0x1.fffffep-1f;
 
-// sin and cos of r, |r| <= pi/4, by the polynomial cores of sin_u10 and cos_u10 without their
-// compensated last steps: a few float roundings (the sampler's bounds allow them, and they
-// halve its cost).
+// sin and cos of |r| <= pi/4 by the cores of cos_u10 without its compensated last steps: a few
+// float roundings, which the sampler's bounds allow, at half the cost.
 template <class Arch>
 inline Pair<floats<Arch>> sin_cos_quarter_pi(floats<Arch> r) {
   using F = floats<Arch>;
@@ -78,10 +76,8 @@ inline CellPosition<Arch> locate(floats<Arch> u1) {
   // Lower cells: 2 L u1 = cell + 1/2 + x exactly.
   const F scaled = u1 * F(2 * cells.lower_cells);
   const F lower_cell = xsimd::min(xsimd::floor(scaled), F(cells.lower_cells - 1));
-  // Upper cells, by the bits of w = 1 - u1 (exact for u1 >= 1/2): the exponent field and the
-  // top band_bits of the mantissa give s = (e + 127) B + band, so that
-  // upper_cell(e, band) = L + (125 - (e + 127)) B + band; the mantissa's other bits, as a
-  // float in [1, 2), give 1.5 + x.
+  // Upper cells by the bits of w = 1 - u1 (exact): exponent and top band_bits give the cell,
+  // the other mantissa bits, as a float in [1, 2), 1.5 + x.
   constexpr int kFractionBits = 23 - cells.band_bits;
   const I bits = xsimd::bitwise_cast<I>(F(1.0f) - u1);
   const I s = bits >> kFractionBits;
@@ -126,11 +122,8 @@ class PreparedSampler {
       : kernel_(kernel), half_c_(0.5f * kernel.c), limit_(kernel.limit),
         peak_(kernel.density_scale) {}
 
-  // The polar angle theta(u1) of the fitted inverse CDF, in [0, limit]; u1 in [0, 1).
-  // AVX-512 looks the coarse table up with permutes (a gather of 16 lanes costs about 16
-  // loads, a two-register permute one instruction); the other archs gather from the fine one,
-  // AVX2 with its instruction (xsimd 8.1's batch::gather never reaches its AVX2 overload and
-  // loads lane by lane).
+  // The polar angle theta(u1) of the fitted inverse CDF, in [0, limit]. AVX-512 permutes the
+  // coarse table (one instruction, not 16 loads); AVX2 gathers with its own instruction.
   F polar_angle(F u1) const {
     using K = SamplerKernel;
     F p;
@@ -185,14 +178,9 @@ class PreparedSampler {
   F half_c_, limit_, peak_;
 };
 
-// ---- One sample per call ---------------------------------------------------------------------
-// PreparedSampler's steps for one (u1, u2), in double: a path tracer's one direction per
-// bounce, where a batch would compute one lane of many. Double leaves the float roundings of
-// the batch code out (the bounds' errors are the fit's and the outputs' roundings). The arch
-// brings its FMA only: one sample's cost is a chain of dependent multiply-adds, which fusing
-// shortens. Helpers are templates on the arch, as everything here: each arch's TU
-// compiles its own (so integer_power below is not detail::integer_power<double>, which every
-// arch's TU would instantiate under one name, compiled with different flags).
+// PreparedSampler's steps for one (u1, u2) in double, a path tracer's one direction per bounce.
+// The arch brings its FMA, shortening the chain of multiply-adds; helpers are templates on it,
+// so each arch's TU compiles its own.
 namespace one_sample {
 
 struct SinCos {
@@ -216,8 +204,7 @@ inline double pairwise_cubic(double u, const std::array<float, 4>& c) {
   return mul_add<Arch>(u * u, mul_add<Arch>(at(3), u, at(2)), mul_add<Arch>(at(1), u, at(0)));
 }
 
-// sin and cos of |r| <= pi/4 by the polynomial cores of kutlog's sin and cos: within about
-// 2^-27 (the cores' own error), where the bounds allow 2^-21 of G.
+// sin and cos of |r| <= pi/4 by kutlog's cores: within 2^-27; the bounds allow 2^-21 of G.
 template <class Arch>
 inline SinCos sin_cos_quarter_pi(double r) {
   const double u = r * r;
@@ -234,9 +221,8 @@ inline SinCos sin_cos_half_pi(double theta) {
   return {upper ? r.cos : r.sin, upper ? r.sin : r.cos};
 }
 
-// sin and cos of the azimuth 2 pi u, u in [0, 1): 4u = q + f exactly, |f| <= 1/2, and the turn
-// by q pi/2 applied to (sin, cos)(f pi/2) with the quadrant's sine and cosine (0 or +-1) looked
-// up: exact products, no branch on a random quadrant.
+// sin and cos of the azimuth 2 pi u: 4u = q + f exactly, (sin, cos)(f pi/2) turned by q pi/2
+// with looked-up 0 and +-1: exact products, no branch on a random quadrant.
 template <class Arch>
 inline SinCos sin_cos_turn(float u) {
   static constexpr double kQuadrantSin[4] = {0, 1, 0, -1}, kQuadrantCos[4] = {1, 0, -1, 0};
@@ -251,14 +237,6 @@ inline SinCos sin_cos_turn(float u) {
 template <class Arch>
 inline float unit_interval(float u) {
   return u > 0 ? std::min(u, detail::kLargestBelowOne) : 0.0f;
-}
-
-template <class Arch>
-inline double integer_power(double base, int k) {
-  double power = 1;
-  for (; k > 0; k >>= 1, base *= base)
-    if (k & 1) power *= base;
-  return power;
 }
 
 // The polar angle theta(u1) of the fitted inverse CDF (the fine table), in [0, limit].
@@ -290,7 +268,7 @@ inline SampledDirection sample(const SamplerKernel& kernel, float u1, float u2) 
   const SinCos azimuth = sin_cos_turn<Arch>(unit_interval<Arch>(u2));
   // F = cos^k(c theta) with cos(c theta) = 1 - 2 sin^2(c theta / 2), c theta in [0, pi/2].
   const double sin_half = sin_cos_quarter_pi<Arch>(0.5 * double(kernel.c) * theta).sin;
-  const double lobe = integer_power<Arch>(1 - 2 * sin_half * sin_half, kernel.k);
+  const double lobe = kutlog::detail::integer_power<Arch>(1 - 2 * sin_half * sin_half, kernel.k);
   const double density =
       double(kernel.density_scale) * lobe * (kernel.cosine_weighted ? polar.cos : 1);
   return {float(polar.sin * azimuth.cos), float(polar.sin * azimuth.sin), float(polar.cos),

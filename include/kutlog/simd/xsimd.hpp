@@ -1,12 +1,13 @@
-// kutlog/simd/xsimd.hpp: xsimd, as every kutlog header and source includes it: the portable
-// arch, and xsimd's kernels specialized where xsimd 8.1 gets them wrong (below).
+// kutlog/simd/xsimd.hpp: xsimd as every kutlog file includes it, with the fixes of
+// docs/design.md "Patches to xsimd 8.1": GCC's -O0 AVX-512 blends, neon64's division,
+// square root and reciprocal, and the portable arch where xsimd has none.
 #pragma once
 
-// The portable arch declares its kernels before xsimd defines batch (kutlog/simd/portable.hpp).
-#include "kutlog/simd/portable.hpp"
+// Before xsimd: its qualified kernel calls bind where written.
+#include "kutlog/simd/detail/portable.hpp"
 
 #include <xsimd/xsimd.hpp>
-// On a CPU xsimd 8.1 has no arch for, xsimd.hpp stops before batch: the portable arch needs it.
+// Where xsimd has no arch, xsimd.hpp stops before batch, which the portable arch needs.
 #ifdef XSIMD_NO_SUPPORTED_ARCHITECTURE
 #include <xsimd/types/xsimd_batch.hpp>
 #include <xsimd/types/xsimd_batch_constant.hpp>
@@ -52,15 +53,8 @@ KUTLOG_AVX512BW_SELECT(unsigned long long)
 }  // namespace xsimd::kernel
 #endif
 
-// xsimd 8.1 on AArch64 (neon64) takes its float division, square root and reciprocal from
-// 32-bit ARM's NEON: a / b and sqrt(x) are estimates refined by two Newton steps (neither
-// correctly rounded, nor right for infinities and subnormals), and reciprocal(x) is the bare
-// FRECPE estimate (8 bits, where x86's rcpps has 12 and the refinements in kutlog assume 12).
-// AArch64 has IEEE division and square root (FDIV, FSQRT): these explicit specializations of
-// xsimd's own kernels make them the ones used, and reciprocal one Newton step (FRECPS) better,
-// 16 bits. Being specializations, not overloads, they need no lookup: they apply wherever
-// xsimd's templates are instantiated after this header, which every kutlog header includes
-// first.
+// neon64: FDIV, FSQRT and FRECPE plus one FRECPS step instead of xsimd's 32-bit NEON estimates;
+// explicit specializations, so they apply wherever xsimd's templates are instantiated.
 #if XSIMD_WITH_NEON64
 namespace xsimd::kernel {
 template <>

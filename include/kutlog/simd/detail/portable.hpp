@@ -1,4 +1,4 @@
-// kutlog/simd/portable.hpp: kutlog::simd::portable, an xsimd arch made of the compiler's own
+// kutlog/simd/detail/portable.hpp: kutlog::simd::portable, an xsimd arch made of the compiler's own
 // vectors (GCC's and clang's vector_size extension), so that the kernel templates of
 // kutlog/simd/ compile for any CPU with no SIMD flag and no intrinsic: the portable entry of
 // the arch registry (cmake/KutlogArchs.cmake), the baseline where kutlog has no SIMD arch.

@@ -1,0 +1,86 @@
+// The lobe and PowerPoly array loops, one per degree and finish, and the table of them a Lobe
+// picks its loop from.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <utility>
+
+#include "arch/array_loops.hpp"
+#include "arch/kernel_table.hpp"
+#include "kutlog/simd/lobe.hpp"
+
+namespace kutlog::detail {
+
+// PowerPoly over an array: one loop per decomposition, variant (E's degree) and log degree,
+// picked per call by one lookup.
+template <class Arch, bool kDecomposed, int kExpDegree, int kLogDegree>
+void power_poly_loop(const PowerPolyKernel& kernel, const float* t, float* out, std::size_t count) {
+  map_arrays<Arch, 1>(simd::PreparedPowerPoly<Arch, kDecomposed, kLogDegree, kExpDegree>(kernel),
+                      {t}, out, count);
+}
+template <class Arch>
+void power_poly_array(const PowerPolyKernel& kernel, const float* t, float* out, std::size_t count) {
+  constexpr int kDegrees = PowerPolyKernel::kMaxLogDegree;
+  using Loop = void (*)(const PowerPolyKernel&, const float*, float*, std::size_t);
+  static constexpr auto kLoops = []<int... degree>(std::integer_sequence<int, degree...>) {
+    constexpr int kPrecise = PowerPolyKernel::kPreciseExpDegree, kFast = PowerPolyKernel::kFastExpDegree;
+    return std::array<Loop, 4 * kDegrees>{&power_poly_loop<Arch, false, kPrecise, degree + 1>...,
+                                          &power_poly_loop<Arch, false, kFast, degree + 1>...,
+                                          &power_poly_loop<Arch, true, kPrecise, degree + 1>...,
+                                          &power_poly_loop<Arch, true, kFast, degree + 1>...};
+  }(std::make_integer_sequence<int, kDegrees>());
+  const int form = 2 * int(kernel.decomposed) +
+                   int(kernel.exp_degree == PowerPolyKernel::kFastExpDegree);
+  kLoops[std::size_t(form * kDegrees + kernel.log_degree - 1)](kernel, t, out, count);
+}
+
+// The lobe over an array: the polynomial form with its degree as a template argument (unrolled,
+// coefficients in registers) and its finish fixed, the base_power form generic. The table holds
+// one per degree and finish, so that a call picks its loop by the slot its Lobe computed at
+// setup, with no further dispatch.
+template <class Arch, int kDegree, simd::LobeFinish kFinish, bool kClamped>
+[[gnu::noinline]] void kutlog_lobe_loop(const LobeKernel& kernel, const float* t, float* out,
+                                        std::size_t count) {
+  map_arrays<Arch, 1>(simd::PreparedLobe<Arch, kDegree, kFinish, kClamped>(kernel), {t}, out,
+                      count, 1.0f);
+}
+// A span of at most one batch (a renderer's span of 16 on AVX-512) runs straight through, no
+// loop; longer spans jump to the loop. A whole batch is loaded and stored whole, never through
+// the lane mask: Zen 4 forwards no masked store to a later load, nor a store to a masked load,
+// and a caller who reads back the span it just shaded, as shade() does, would wait for it.
+template <class Arch, int kDegree, simd::LobeFinish kFinish = simd::LobeFinish::any,
+          bool kClamped = true>
+void kutlog_lobe_array(const LobeKernel& kernel, const float* t, float* out, std::size_t count) {
+  using F = floats_of<Arch>;
+  if (count > F::size)
+    return kutlog_lobe_loop<Arch, kDegree, kFinish, kClamped>(kernel, t, out, count);
+  const simd::PreparedLobe<Arch, kDegree, kFinish, kClamped> lobe(kernel);
+  if (count == F::size) return lobe(F::load_unaligned(t)).store_unaligned(out);
+  if (count == 0) return;  // SSE4.1's partial load reads t[0]
+  store_partial<Arch>(Arch{}, out, lobe(load_partial<Arch>(Arch{}, t, count, 1.0f)), count);
+}
+template <class Arch>
+constexpr LobeArrayKernels lobe_array_kernels() {
+  using simd::LobeFinish;
+  // An FMA-less arch runs a compensated kernel (never given it: see LobeArrayKernels) as split.
+  constexpr LobeFinish kCompensated =
+      simd::has_fused_fma<Arch> ? LobeFinish::compensated : LobeFinish::split;
+  LobeArrayKernels kernels{};
+  kernels.fused_fma = simd::has_fused_fma<Arch>;
+  [&]<int... degree>(std::integer_sequence<int, degree...>) {
+    constexpr int kPer = LobeArrayKernels::kSlotsPerDegree;
+    ((kernels.by_slot[kPer * degree] = &kutlog_lobe_array<Arch, degree, LobeFinish::plain>,
+      kernels.by_slot[kPer * degree + 1] = &kutlog_lobe_array<Arch, degree, LobeFinish::split>,
+      kernels.by_slot[kPer * degree + 2] = &kutlog_lobe_array<Arch, degree, kCompensated>,
+      kernels.by_slot[kPer * degree + 3] =
+          &kutlog_lobe_array<Arch, degree, LobeFinish::plain, false>,
+      kernels.by_slot[kPer * degree + 4] =
+          &kutlog_lobe_array<Arch, degree, LobeFinish::split, false>),
+     ...);
+  }(std::make_integer_sequence<int, LobeArrayKernels::kMaxUnrolledDegree + 1>());
+  kernels.by_slot[LobeArrayKernels::kSlots - 1] = &kutlog_lobe_array<Arch, -1>;
+  return kernels;
+}
+
+}  // namespace kutlog::detail

@@ -1,0 +1,37 @@
+// The lobe sampler over arrays.
+#pragma once
+
+#include <cstddef>
+
+#include "arch/partial_batches.hpp"
+#include "kutlog/sampling.hpp"
+#include "kutlog/simd/sampling.hpp"
+
+namespace kutlog::detail {
+
+// The sampler over arrays: four outputs per pair of inputs, the tail as a partial batch.
+template <class Arch>
+void sample_lobe_array(const SamplerKernel& kernel, const float* u1, const float* u2,
+                       DirectionSamples out, std::size_t count) {
+  using F = floats_of<Arch>;
+  constexpr std::size_t N = F::size;
+  const simd::PreparedSampler<Arch> sampler(kernel);
+  std::size_t i = 0;
+  for (; i + N <= count; i += N) {
+    const simd::SampleBatch<Arch> sample = sampler(F::load_unaligned(u1 + i), F::load_unaligned(u2 + i));
+    sample.x.store_unaligned(out.x + i);
+    sample.y.store_unaligned(out.y + i);
+    sample.z.store_unaligned(out.z + i);
+    sample.pdf.store_unaligned(out.pdf + i);
+  }
+  if (i == count) return;
+  const std::size_t tail = count - i;
+  const simd::SampleBatch<Arch> sample = sampler(load_partial<Arch>(Arch{}, u1 + i, tail, 0.5f),
+                                                 load_partial<Arch>(Arch{}, u2 + i, tail, 0.5f));
+  store_partial<Arch>(Arch{}, out.x + i, sample.x, tail);
+  store_partial<Arch>(Arch{}, out.y + i, sample.y, tail);
+  store_partial<Arch>(Arch{}, out.z + i, sample.z, tail);
+  store_partial<Arch>(Arch{}, out.pdf + i, sample.pdf, tail);
+}
+
+}  // namespace kutlog::detail
