@@ -6,6 +6,7 @@
 #include <array>
 #include <utility>
 
+#include "kutlog/detail/integer_power.hpp"
 #include "kutlog/lobe.hpp"
 #include "kutlog/simd/math.hpp"
 #include "kutlog/simd/xsimd.hpp"
@@ -13,16 +14,6 @@
 namespace kutlog::simd {
 
 namespace detail {
-// b^k for a small positive integer k known per call (a loop over its bits, not per lane). Kept
-// apart from detail::integer_power: the certified double-form bound counts these products.
-template <class Batch>
-inline Batch integer_power(Batch base, int k) {
-  Batch result(1.0);
-  for (; k > 0; k >>= 1, base *= base)
-    if (k & 1) result *= base;
-  return result;
-}
-
 // min(upper, max(0, value)), NaN kept (x86's max and min return their second operand).
 template <class Batch>
 inline Batch clamp_zero_to(Batch value, Batch upper) {
@@ -125,7 +116,8 @@ class PreparedLobe {
       std::size_t i = std::size_t(kernel_.degree);
       D q(kernel_.q_d[i]);
       while (i-- > 0) q = mul_add(q, w, D(kernel_.q_d[i]));
-      return D(kernel_.scale_d) * detail::integer_power(neg_mul_add(w, q, D(1.0)), kernel_.k);
+      return D(kernel_.scale_d) *
+             kutlog::detail::integer_power(neg_mul_add(w, q, D(1.0)), kernel_.k);
     };
     const Pair<D> halves = widen(t);
     return narrow(half(halves.hi), half(halves.lo));
@@ -174,7 +166,7 @@ class PreparedPerLaneLobe {
     using D = doubles<Arch>;
     const Pair<D> v_halves = widen(v), r_halves = widen(r);
     const auto half = [this](D v_half, D r_half) {
-      return detail::integer_power(neg_mul_add(v_half, r_half, D(1.0)), kernel_.k);
+      return kutlog::detail::integer_power(neg_mul_add(v_half, r_half, D(1.0)), kernel_.k);
     };
     return narrow(half(v_halves.hi, r_halves.hi), half(v_halves.lo, r_halves.lo));
   }

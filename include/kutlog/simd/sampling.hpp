@@ -163,8 +163,8 @@ class PreparedSampler {
     // F = cos^k(c theta), cos(c theta) = 1 - 2 sin^2(c theta / 2), c theta in [0, pi/2].
     const F half_angle = half_c_ * theta;
     const F sin_half = detail::sin_cos_quarter_pi(half_angle).hi;
-    const F lobe = detail::integer_power(neg_mul_add(F(2.0f) * sin_half, sin_half, F(1.0f)),
-                                         kernel_.k);
+    const F base = neg_mul_add(F(2.0f) * sin_half, sin_half, F(1.0f));
+    const F lobe = kutlog::detail::integer_power(base, kernel_.k);
     const F density = kernel_.cosine_weighted ? peak_ * lobe * cos_theta : peak_ * lobe;
     const auto valid = (u1 == u1) & (u2 == u2);
     const F nan(std::numeric_limits<float>::quiet_NaN());
