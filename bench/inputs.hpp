@@ -38,26 +38,27 @@ inline std::vector<float> uniform_inputs(float lo, float hi, unsigned seed = 1,
   return values;
 }
 
-// Two inputs and one output (or more) of kArrayLength floats in one 64-byte aligned block, each
-// array half a page (modulo 4 KiB) away from the next. With arrays at distances that are multiples
-// of 4 KiB, or just above, a load can falsely wait on an earlier store to the same low 12
-// address bits (4K aliasing): where the heap happened to put an output vector, pow_xsimd ran
-// at a quarter of its speed and a division-bound kernel at a fifteenth.
+// Two inputs and one output (or more) of x.size() floats (a multiple of 1024) in one 64-byte
+// aligned block, each array half a page (modulo 4 KiB) away from the next. With arrays at
+// distances that are multiples of 4 KiB, or just above, a load can falsely wait on an earlier
+// store to the same low 12 address bits (4K aliasing): where the heap happened to put an
+// output vector, pow_xsimd ran at a quarter of its speed and a division-bound kernel at a
+// fifteenth.
 class BenchArrays {
  public:
   BenchArrays(const std::vector<float>& x, const std::vector<float>& y, int outputs = 1)
-      : block_((2 + outputs) * kStride + 16) {
+      : stride_(x.size() + 512), block_((2 + outputs) * stride_ + 16) {
     const std::size_t misalignment = reinterpret_cast<std::uintptr_t>(block_.data()) % 64 / 4;
     base_ = block_.data() + (16 - misalignment) % 16;
     std::copy(x.begin(), x.end(), this->x());
     std::copy(y.begin(), y.end(), this->y());
   }
   float* x() { return base_; }
-  float* y() { return base_ + kStride; }
-  float* out(int output = 0) { return base_ + (2 + output) * kStride; }
+  float* y() { return base_ + stride_; }
+  float* out(int output = 0) { return base_ + (2 + output) * stride_; }
 
  private:
-  static constexpr std::size_t kStride = kArrayLength + 512;  // + 2 KiB
+  std::size_t stride_;  // + 2 KiB
   std::vector<float> block_;
   float* base_;
 };

@@ -104,37 +104,46 @@ void register_scalar_benchmarks() {
           [](float t) { return float(std::pow(double(std::max(t, 0.0f)), 1000.0)); }, cosines);
     }
   // One half vector per call, as a path tracer draws them: LobeSampler::sample(u1, u2), and
-  // pbrt-v2's Blinn-Phong draw (bench/sampling_benchmarks.hpp).
-  for (int k : {1, 3, 5})
-    benchmark::RegisterBenchmark(
-        ("sample/sample_kutlog_scalar/n:" + std::to_string(kSamplingExponent) +
-         "/k:" + std::to_string(k))
-            .c_str(),
-        [k](benchmark::State& state) {
-          const LobeSampler sampler(kSamplingExponent, k, kLobeAnchor, LobeUse::microfacet);
-          run_sampler(state, [&](const float* u1, const float* u2, DirectionSamples out) {
-            for (std::size_t i = 0; i < kArrayLength; ++i) {
-              const SampledDirection d = sampler.sample(u1[i], u2[i]);
-              out.x[i] = d.x, out.y[i] = d.y, out.z[i] = d.z, out.pdf[i] = d.pdf;
-            }
+  // pbrt-v2's Blinn-Phong draw (bench/sampling_benchmarks.hpp); over 4096 pairs, and over 2^18
+  // whose order no branch predictor learns, as a path tracer's fresh random numbers.
+  for (std::size_t count : {kArrayLength, kFragmentInputsUnlearned}) {
+    const std::string at = "/n:" + std::to_string(kSamplingExponent);
+    const std::string inputs = fragment_inputs_token(count);
+    for (int k : {1, 3, 5})
+      benchmark::RegisterBenchmark(
+          ("sample/sample_kutlog_scalar" + at + "/k:" + std::to_string(k) + inputs).c_str(),
+          [k, count](benchmark::State& state) {
+            const LobeSampler sampler(kSamplingExponent, k, kLobeAnchor, LobeUse::microfacet);
+            run_sampler(
+                state,
+                [&](const float* u1, const float* u2, DirectionSamples out) {
+                  for (std::size_t i = 0; i < count; ++i) {
+                    const SampledDirection d = sampler.sample(u1[i], u2[i]);
+                    out.x[i] = d.x, out.y[i] = d.y, out.z[i] = d.z, out.pdf[i] = d.pdf;
+                  }
+                },
+                count);
           });
+    benchmark::RegisterBenchmark(
+        ("sample/sample_blinn_pow_scalar" + at + inputs).c_str(),
+        [count](benchmark::State& state) {
+          run_sampler(
+              state,
+              [count](const float* u1, const float* u2, DirectionSamples out) {
+                constexpr float kExponent = kSamplingExponent, kTwoPi = float(2 * std::numbers::pi);
+                constexpr float kInverse = 1 / (kExponent + 1), kPdfScale = (kExponent + 1) / kTwoPi;
+                for (std::size_t i = 0; i < count; ++i) {
+                  const float cos_theta = std::pow(u1[i], kInverse), phi = kTwoPi * u2[i];
+                  const float sin_theta = std::sqrt(std::max(0.0f, 1 - cos_theta * cos_theta));
+                  out.x[i] = sin_theta * std::cos(phi);
+                  out.y[i] = sin_theta * std::sin(phi);
+                  out.z[i] = cos_theta;
+                  out.pdf[i] = kPdfScale * u1[i] / cos_theta;
+                }
+              },
+              count);
         });
-  benchmark::RegisterBenchmark(
-      ("sample/sample_blinn_pow_scalar/n:" + std::to_string(kSamplingExponent)).c_str(),
-      [](benchmark::State& state) {
-        run_sampler(state, [](const float* u1, const float* u2, DirectionSamples out) {
-          constexpr float kExponent = kSamplingExponent, kTwoPi = float(2 * std::numbers::pi);
-          constexpr float kInverse = 1 / (kExponent + 1), kPdfScale = (kExponent + 1) / kTwoPi;
-          for (std::size_t i = 0; i < kArrayLength; ++i) {
-            const float cos_theta = std::pow(u1[i], kInverse), phi = kTwoPi * u2[i];
-            const float sin_theta = std::sqrt(std::max(0.0f, 1 - cos_theta * cos_theta));
-            out.x[i] = sin_theta * std::cos(phi);
-            out.y[i] = sin_theta * std::sin(phi);
-            out.z[i] = cos_theta;
-            out.pdf[i] = kPdfScale * u1[i] / cos_theta;
-          }
-        });
-      });
+  }
 }
 
 // Construction time of Lobe, PerLaneLobe and LobeSampler over 200 random materials (n

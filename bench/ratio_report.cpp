@@ -215,6 +215,20 @@ std::optional<tools::Table> RatioCollector::sampling_ratios() const {
                                times(rate("sample/sample_kutlog/n:1000/k:3" + tail) / blinn),
                                times(rate("sample/sample_kutlog/n:1000/k:5" + tail) / blinn))});
   }
+  // One sample per call (sampler.sample(u1, u2) against pbrt-v2's scalar draw) on the arch the
+  // dispatch chooses, over 4096 pairs and over 2^18.
+  for (const std::string inputs : {"", "/inputs:262144"}) {
+    const double blinn = rate("sample/sample_blinn_pow_scalar/n:1000" + inputs);
+    if (blinn == 0) continue;
+    any = true;
+    const auto over_blinn = [&](int k) {
+      return times(rate("sample/sample_kutlog_scalar/n:1000/k:" + std::to_string(k) + inputs) /
+                   blinn);
+    };
+    table.add_row({inputs.empty() ? "one per call" : "one per call, 2^18 pairs", "dispatched",
+                   millions(blinn),
+                   fmt::format("{} / {} / {}", over_blinn(1), over_blinn(3), over_blinn(5))});
+  }
   return any ? std::optional(std::move(table)) : std::nullopt;
 }
 

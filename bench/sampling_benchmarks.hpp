@@ -6,9 +6,10 @@
 //                     (n+1)/(2 pi) cos^n = (n+1)/(2 pi) u1 / cos(theta) (no second pow).
 // and, as a path tracer calls a sampler (one direction per bounce), one sample per call:
 //   sample_kutlog/n:1000/k:3/count:1/arch:<arch>: LobeSampler::sample with count 1;
-//   sample_kutlog_scalar/n:1000/k:<k> (bench/main.cpp): LobeSampler::sample(u1, u2);
-//   sample_blinn_pow_scalar/n:1000 (bench/main.cpp): pbrt-v2's, scalar, with std::pow, std::cos
-//                     and std::sin in float.
+//   sample_kutlog_scalar/n:1000/k:<k>[/inputs:262144] (bench/main.cpp): LobeSampler::sample(u1,
+//                     u2), over 4096 pairs or over 2^18 (more than a branch predictor learns);
+//   sample_blinn_pow_scalar/n:1000[/inputs:262144] (bench/main.cpp): pbrt-v2's, scalar, with
+//                     std::pow, std::cos and std::sin in float.
 // All write the same four arrays (x, y, z, pdf) from the same two of uniform numbers.
 // Instantiated by bench/arch_benchmarks.cpp, compiled with that arch's flags.
 #pragma once
@@ -28,17 +29,18 @@ namespace kutlog::bench {
 
 inline constexpr int kSamplingExponent = 1000;
 
-// Runs `sample(u1, u2, out)` over kArrayLength pairs of uniform numbers.
+// Runs `sample(u1, u2, out)` over `count` pairs of uniform numbers.
 template <class Sample>
-void run_sampler(benchmark::State& state, const Sample& sample) {
-  BenchArrays arrays(uniform_inputs(0, 1, 3), uniform_inputs(0, 1, 4), 4);
+void run_sampler(benchmark::State& state, const Sample& sample,
+                 std::size_t count = kArrayLength) {
+  BenchArrays arrays(uniform_inputs(0, 1, 3, count), uniform_inputs(0, 1, 4, count), 4);
   const DirectionSamples out{arrays.out(0), arrays.out(1), arrays.out(2), arrays.out(3)};
   for (auto _ : state) {
     sample(arrays.x(), arrays.y(), out);
     benchmark::DoNotOptimize(out.pdf);
     benchmark::ClobberMemory();
   }
-  state.SetItemsProcessed(state.iterations() * std::int64_t(kArrayLength));
+  state.SetItemsProcessed(state.iterations() * std::int64_t(count));
 }
 
 template <class SimdArch>

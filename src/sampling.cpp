@@ -35,7 +35,7 @@ std::vector<Cell> cells_of(SamplerCells layout) {
   const double lower_width = 0.5 / layout.lower_cells;
   for (int i = 0; i < layout.lower_cells; ++i)
     result.push_back({i, true, i * lower_width, lower_width});
-  for (int exponent = -2; exponent >= -2 - SamplerCells::kUpperBinades + 1; --exponent)
+  for (int exponent = layout.top_exponent; exponent >= SamplerCells::kLowestExponent; --exponent)
     for (int band = 0; band < layout.bands(); ++band) {
       const double binade = std::ldexp(1.0, exponent), width = binade / layout.bands();
       result.push_back({layout.upper_cell(exponent, band), false, binade + band * width, width});
@@ -48,13 +48,36 @@ double largest_float_at_most(double x) {
   return double(rounded) <= x ? rounded : std::nextafter(rounded, 0.0f);
 }
 
-// theta at u1 = argument (lower cells) or 1 - argument (upper cells, argument = w): what a fit
-// interpolates.
-using ThetaAt = std::function<double(bool lower, double argument)>;
+// A value at u1 = argument (lower cells) or 1 - argument (upper cells, argument = w): what a
+// fit interpolates.
+using ValueAt = std::function<double(bool lower, double argument)>;
+
+// What a fit's polynomial is multiplied by, where the value vanishes as sqrt(u1) at the peak:
+// sqrt(u1) in the lower cells (theta); sqrt(min(2 u1, 1)) in cells of w alone (sin(theta/2),
+// whose kernel takes no branch on u1, and whose weight is then exactly 1 above 1/2). Or
+// nothing (the pdf).
+enum class Weight { sqrt_u1_in_lower_cells, sqrt_of_twice_u1_below_half, none };
+
+double weight_at(Weight weight, bool lower, double argument) {
+  const double u1 = lower ? argument : 1 - argument;
+  switch (weight) {
+    case Weight::sqrt_u1_in_lower_cells: return lower ? std::sqrt(u1) : 1.0;
+    case Weight::sqrt_of_twice_u1_below_half: return std::sqrt(std::min(2 * u1, 1.0));
+    case Weight::none: return 1.0;
+  }
+  return 1.0;
+}
+
+// Where a fit stores coefficient j of cell i: at cell_stride * i + row_stride * j.
+struct Storage {
+  int cell_stride, row_stride;
+  float* coefficients;
+  float* at(int cell, int j) const { return coefficients + cell_stride * cell + row_stride * j; }
+};
 
 struct Fit {
   int degree;
-  double error;  // the largest |theta_fit - theta_at| / G at the check points
+  double error;  // the largest |fit - value_at| / scale at the check points
   std::vector<std::vector<Real>> series;  // each cell's Chebyshev series in 2x, by cell index
 
   // theta by the full series (in long double) of the cell of `layout` holding the argument.
@@ -67,33 +90,43 @@ struct Fit {
       const Real next = 4 * x * current - previous;
       previous = current, current = next, sum += a[j] * current;
     }
-    return double(sum) * (lower ? std::sqrt(argument) : 1.0);
+    return double(sum) * weight_at(Weight::sqrt_u1_in_lower_cells, lower, argument);
   }
 };
 
-// Fits theta_at in every cell of `layout` with one degree, the lowest (up to max_degree) whose
-// dropped Chebyshev coefficients sum below the tolerance in every cell; coefficient j of cell i
-// into coefficients[j * stride + i], as floats; then checks the fit as stored, in double.
-Fit fit_cells(const ThetaAt& theta_at, double G, SamplerCells layout, int max_degree, int stride,
-              float* coefficients) {
-  const auto theta_of = [&](const Cell& cell, double x) {
-    return theta_at(cell.lower, cell.argument(x));
+// The stored polynomial of the cell holding the argument, in double, times its weight.
+double stored_value(SamplerCells layout, Weight weight, int degree, Storage storage, bool lower,
+                    double argument) {
+  const auto [cell, x] = layout.position(lower, argument);
+  double p = *storage.at(cell, degree);
+  for (int j = degree; j-- > 0;) p = p * x + *storage.at(cell, j);
+  return weight_at(weight, lower, argument) * p;
+}
+
+// Fits value_at in every cell of `layout` with one degree, the lowest (up to max_degree) whose
+// dropped Chebyshev coefficients sum below the tolerance times scale in every cell; stores the
+// monomial coefficients as floats (zero above that degree, up to max_degree); then checks the
+// fit as stored, in double.
+Fit fit_cells(const ValueAt& value_at, double scale, Weight weight, SamplerCells layout,
+              int max_degree, Storage storage) {
+  const auto value_of = [&](const Cell& cell, double x) {
+    return value_at(cell.lower, cell.argument(x));
   };
-  const auto weight = [](const Cell& cell, double x) {
-    return cell.lower ? std::sqrt(cell.argument(x)) : 1.0;
+  const auto weight_of = [&](const Cell& cell, double x) {
+    return weight_at(weight, cell.lower, cell.argument(x));
   };
   const std::vector<Cell> all = cells_of(layout);
   Fit fit{1, 0, std::vector<std::vector<Real>>(layout.count())};
   for (const Cell& cell : all) {
     std::vector<Real>& series = fit.series[cell.index];
     series = detail::chebyshev_coefficients(
-        [&](Real x) { return Real(theta_of(cell, double(x)) / weight(cell, double(x))); }, -0.5,
-        0.5, max_degree + 1);
+        [&](Real x) { return Real(value_of(cell, double(x)) / weight_of(cell, double(x))); },
+        -0.5, 0.5, max_degree + 1);
     double tail = 0;
     int needed = max_degree;
     for (int j = max_degree; j > 0; --j) {
-      tail += double(std::fabs(series[j])) * weight(cell, 0.5);
-      if (tail > kFitTolerance * G) break;
+      tail += double(std::fabs(series[j])) * weight_of(cell, 0.5);
+      if (tail > kFitTolerance * scale) break;
       needed = j - 1;
     }
     fit.degree = std::max(fit.degree, needed);
@@ -101,13 +134,14 @@ Fit fit_cells(const ThetaAt& theta_at, double G, SamplerCells layout, int max_de
   for (const Cell& cell : all) {
     const std::vector<Real> monomials =
         detail::monomials_from_chebyshev(fit.series[cell.index], fit.degree, -0.5, 0.5, 0);
-    float* const column = coefficients + cell.index;
-    for (int j = 0; j <= fit.degree; ++j) column[j * stride] = float(monomials[j]);
+    for (int j = 0; j <= max_degree; ++j)
+      *storage.at(cell.index, j) = j <= fit.degree ? float(monomials[j]) : 0.0f;
     for (int m = 0; m < kCheckPoints; ++m) {
       const double x = (m + 0.5) / kCheckPoints - 0.5;
-      double p = column[fit.degree * stride];
-      for (int j = fit.degree; j-- > 0;) p = p * x + column[j * stride];
-      fit.error = std::max(fit.error, std::fabs(weight(cell, x) * p - theta_of(cell, x)) / G);
+      double p = *storage.at(cell.index, fit.degree);
+      for (int j = fit.degree; j-- > 0;) p = p * x + *storage.at(cell.index, j);
+      fit.error =
+          std::max(fit.error, std::fabs(weight_of(cell, x) * p - value_of(cell, x)) / scale);
     }
   }
   return fit;
@@ -150,13 +184,36 @@ LobeSampler::LobeSampler(double n, int k, double Q, LobeUse use)
         last_xi[1] = xi, last_theta[1] = theta;
         return theta;
       },
-      limit_, K::kCoarse, K::kCoarseMaxDegree, K::kCoarseStride, kernel_.coarse.data());
-  const Fit fine = fit_cells(
-      [&](bool lower, double argument) { return coarse.theta(K::kCoarse, lower, argument); },
-      limit_, K::kFine, K::kFineMaxDegree, K::kFine.count(), kernel_.fine.data());
+      limit_, Weight::sqrt_u1_in_lower_cells, K::kCoarse, K::kCoarseMaxDegree,
+      {1, K::kCoarseStride, kernel_.coarse.data()});
+  const auto coarse_theta = [&](bool lower, double argument) {
+    return coarse.theta(K::kCoarse, lower, argument);
+  };
+  const Fit fine = fit_cells(coarse_theta, limit_, Weight::sqrt_u1_in_lower_cells, K::kFine, K::kFineMaxDegree,
+                             {1, K::kFine.count(), kernel_.fine.data()});
+  // One sample per call: sin(theta/2), then the pdf of the direction that fit gives (theta =
+  // 2 asin of it as stored), so that the pdf is that of the returned direction to within its
+  // own fit, not also the first fit's.
+  const Storage half_sine{K::kOneSampleStride, 1, kernel_.one_sample.data()};
+  const Storage pdf{K::kOneSampleStride, 1, kernel_.one_sample.data() + K::kOneSampleDegree + 1};
+  // Its cells are all of w = 1 - u1 (argument), u1 <= 1/2 in the top binade.
+  const Fit half_sine_fit = fit_cells(
+      [&](bool, double w) {
+        return std::sin(0.5 * (w >= 0.5 ? fine.theta(K::kFine, true, 1 - w)
+                                         : fine.theta(K::kFine, false, w)));
+      },
+      0.5 * limit_, Weight::sqrt_of_twice_u1_below_half, K::kOneSample, K::kOneSampleDegree, half_sine);
+  const Fit pdf_fit = fit_cells(
+      [&](bool lower, double argument) {
+        const double s = stored_value(K::kOneSample, Weight::sqrt_of_twice_u1_below_half, K::kOneSampleDegree, half_sine,
+                                      lower, argument);
+        return polar.solid_angle_density(2 * std::asin(std::clamp(s, 0.0, 1.0)));
+      },
+      peak, Weight::none, K::kOneSample, K::kOneSampleDegree, pdf);
+  kernel_.half_sine_limit = float(largest_float_at_most(std::sin(0.5 * double(kernel_.limit))));
   kernel_.fine_degree = fine.degree;
   kernel_.coarse_degree = coarse.degree;
-  fit_error_ = std::max(fine.error, coarse.error);
+  fit_error_ = std::max({fine.error, coarse.error, half_sine_fit.error, pdf_fit.error});
 }
 
 }  // namespace kutlog

@@ -19,21 +19,26 @@ namespace kutlog {
 
 using ref::LobeUse;
 
-// How u1 is cut into cells: halves of [0, 1/2], then bands of each binade of 1 - u1.
+// How u1 is cut into cells: lower_cells even cells of [0, 1/2], then 2^band_bits bands of
+// each binade [2^e, 2^(e+1)) of w = 1 - u1, e = top_exponent down to -24 (w >= 2^-24 for a
+// float u1 < 1). With no lower cells and top_exponent -1, the bands of w's top binade are
+// even cells of u1 in (0, 1/2], and every cell is found from the bits of w alone.
 struct SamplerCells {
-  static constexpr int kUpperBinades = 23;
-  int lower_cells, band_bits;
+  static constexpr int kLowestExponent = -24;
+  int lower_cells, band_bits, top_exponent = -2;
   constexpr int bands() const { return 1 << band_bits; }
-  constexpr int count() const { return lower_cells + kUpperBinades * bands(); }
+  constexpr int binades() const { return top_exponent - kLowestExponent + 1; }
+  constexpr int count() const { return lower_cells + binades() * bands(); }
   constexpr int upper_cell(int exponent, int band) const {
-    return lower_cells + (-2 - exponent) * bands() + band;
+    return lower_cells + (top_exponent - exponent) * bands() + band;
   }
-  // The cell of u1 <= 1/2 (lower) or of w = 1 - u1, and x in it (the setup, one sample).
+  // upper_cell from the top bits s = (biased exponent << band_bits) | band of a float w.
+  constexpr int upper_cell_offset() const { return lower_cells + (127 + top_exponent) * bands(); }
+  // The cell of u1 <= 1/2 (lower) or of w = 1 - u1, and x in it (the setup).
   struct Position {
     int cell;
     double x;
   };
-  template <class Arch = void>
   Position position(bool lower, double argument) const {
     if (lower) {
       const double scaled = argument * (2 * lower_cells);
@@ -52,11 +57,16 @@ struct SamplerCells {
 };
 
 // What the sampling kernels need of one material: the inverse CDF fitted for gathers (fine)
-// and for AVX-512's two-register permutes (coarse).
+// and for AVX-512's two-register permutes (coarse); for one sample per call, sin(theta / 2)
+// and the pdf fitted in kOneSample's cells (all found from the bits of 1 - u1), so that no
+// sine of theta or power is left to evaluate.
 struct SamplerKernel {
-  static constexpr SamplerCells kFine{32, 4}, kCoarse{8, 0};
+  static constexpr SamplerCells kFine{32, 4}, kCoarse{8, 0}, kOneSample{0, 3, -1};
   static constexpr int kFineMaxDegree = 5, kCoarseMaxDegree = 12;
   static constexpr int kCoarseStride = 32;  // two registers of 16 floats per coefficient
+  // One cell's row in `one_sample`: sin(theta/2) / sqrt(min(2 u1, 1)), then the pdf, each of
+  // degree kOneSampleDegree (higher coefficients zero where a lower degree fits).
+  static constexpr int kOneSampleDegree = 4, kOneSampleStride = 2 * (kOneSampleDegree + 1);
 
   int fine_degree = 0, coarse_degree = 0;  // of every cell's polynomial
   int k = 1;
@@ -67,6 +77,8 @@ struct SamplerKernel {
   // Coefficient j of cell i at [j * stride + i]: one row per coefficient.
   std::array<float, kFine.count() * (kFineMaxDegree + 1)> fine{};
   std::array<float, kCoarseStride*(kCoarseMaxDegree + 1)> coarse{};
+  float half_sine_limit = 0;  // sin(G / 2) rounded down to a float
+  std::array<float, kOneSample.count() * kOneSampleStride> one_sample{};
 };
 
 struct DirectionSamples {
@@ -94,14 +106,15 @@ class LobeSampler {
   double Q() const { return Q_; }
   LobeUse use() const { return use_; }
   double limit() const { return limit_; }
-  // The largest |theta_fit - inverse_cdf| / G seen at setup.
+  // The largest fit error seen at setup: theta's in units of G, sin(theta/2)'s of G/2, the
+  // pdf's of the peak pdf.
   double fit_error() const { return fit_error_; }
   const SamplerKernel& kernel() const { return kernel_; }
 
   void sample(const float* u1, const float* u2, DirectionSamples out,
               std::size_t count) const noexcept;
 
-  // One sample, in double rounded once, with the arrays' contract.
+  // One sample, with the arrays' contract (scalar float, from SamplerKernel::one_sample).
   SampledDirection sample(float u1, float u2) const noexcept;
   // Floats only: a double u1 just below 1 would round to 1 without a word.
   template <class U1, class U2>

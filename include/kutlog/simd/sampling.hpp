@@ -1,7 +1,10 @@
 // kutlog/simd/sampling.hpp: kutlog/sampling.hpp's lobe sampler on xsimd float batches, and its
-// one-sample path in double (on the arch for its FMA); the contract is kutlog/sampling.hpp's.
+// one-sample path in float scalars (on the arch for its FMA); the contract is
+// kutlog/sampling.hpp's.
 #pragma once
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -81,8 +84,7 @@ inline CellPosition<Arch> locate(floats<Arch> u1) {
   constexpr int kFractionBits = 23 - cells.band_bits;
   const I bits = xsimd::bitwise_cast<I>(F(1.0f) - u1);
   const I s = bits >> kFractionBits;
-  const I upper_cell =
-      I(cells.lower_cells + 125 * cells.bands()) - s + ((s & I(cells.bands() - 1)) << 1);
+  const I upper_cell = I(cells.upper_cell_offset()) - s + ((s & I(cells.bands() - 1)) << 1);
   const I fraction = (bits & I((1 << kFractionBits) - 1)) << cells.band_bits;
   const F upper_x = xsimd::bitwise_cast<F>(fraction | I(0x3f800000)) - F(1.5f);
   return {xsimd::select(xsimd::bool_cast(lower), xsimd::to_int(lower_cell), upper_cell),
@@ -178,83 +180,81 @@ class PreparedSampler {
   F half_c_, limit_, peak_;
 };
 
-// PreparedSampler's steps for one (u1, u2) in double, a path tracer's one direction per bounce.
-// The arch brings its FMA, shortening the chain of multiply-adds; helpers are templates on it,
-// so each arch's TU compiles its own.
+// One (u1, u2) per call, a path tracer's one direction per bounce, in float scalars with no
+// branch on the random numbers: the setup's per-cell fits of sin(theta/2) and of the pdf
+// (SamplerKernel::one_sample) leave two square roots and the azimuth's sine and cosine.
+// Templates on the arch, which brings its FMA: each arch's TU compiles its own.
 namespace one_sample {
 
 struct SinCos {
-  double sin, cos;
+  float sin, cos;
 };
 
-inline constexpr double kHalfPi = 1.5707963267948966;
-
 template <class Arch>
-inline double mul_add(double a, double b, double c) {
+inline float mul_add(float a, float b, float c) {
   if constexpr (has_fused_fma<Arch>)
     return std::fma(a, b, c);
   else
     return a * b + c;
 }
 
-// c[0] + c[1] u + c[2] u^2 + c[3] u^3 in pairs (Estrin's scheme): two steps deep, not three.
+// c[0] + c[1] x + ... + c[4] x^4 in pairs (Estrin's scheme): three steps deep, not four.
+// Always the full degree: a fit of lower degree has zeros above it, cheaper than a branch.
 template <class Arch>
-inline double pairwise_cubic(double u, const std::array<float, 4>& c) {
-  const auto at = [&](std::size_t i) { return double(c[i]); };
-  return mul_add<Arch>(u * u, mul_add<Arch>(at(3), u, at(2)), mul_add<Arch>(at(1), u, at(0)));
+inline float quartic(const float* c, float x) {
+  static_assert(SamplerKernel::kOneSampleDegree == 4);
+  const float square = x * x;
+  const float high = mul_add<Arch>(c[4], square, mul_add<Arch>(c[3], x, c[2]));
+  return mul_add<Arch>(square, high, mul_add<Arch>(c[1], x, c[0]));
 }
 
-// sin and cos of |r| <= pi/4 by kutlog's cores: within 2^-27; the bounds allow 2^-21 of G.
+// sin and cos of |r| <= pi/4 by the cores of kutlog's sin and cos, as the arrays'.
 template <class Arch>
-inline SinCos sin_cos_quarter_pi(double r) {
-  const double u = r * r;
-  return {mul_add<Arch>(r * u, pairwise_cubic<Arch>(u, constants::kSin), r),
-          mul_add<Arch>(u * u, pairwise_cubic<Arch>(u, constants::kCos), 1 - 0.5 * u)};
+inline SinCos sin_cos_quarter_pi(float r) {
+  const float u = r * r;
+  const auto core = [u](const std::array<float, 4>& c) {
+    return mul_add<Arch>(u * u, mul_add<Arch>(c[3], u, c[2]), mul_add<Arch>(c[1], u, c[0]));
+  };
+  return {mul_add<Arch>(r * u, core(constants::kSin), r),
+          mul_add<Arch>(u * u, core(constants::kCos), mul_add<Arch>(-0.5f, u, 1.0f))};
 }
 
-// sin and cos of theta in [0, pi/2]: above pi/4 by those of pi/2 - theta. Selects, not
-// branches: a wide lobe's angles fall on both sides at random.
-template <class Arch>
-inline SinCos sin_cos_half_pi(double theta) {
-  const bool upper = theta > 0.5 * kHalfPi;
-  const SinCos r = sin_cos_quarter_pi<Arch>(upper ? kHalfPi - theta : theta);
-  return {upper ? r.cos : r.sin, upper ? r.sin : r.cos};
-}
-
-// sin and cos of the azimuth 2 pi u: 4u = q + f exactly, (sin, cos)(f pi/2) turned by q pi/2
-// with looked-up 0 and +-1: exact products, no branch on a random quadrant.
+// sin and cos of the azimuth 2 pi u, u in [0, 1): 4u = q + f exactly, (sin, cos)(f pi/2)
+// turned by q pi/2 with looked-up 0 and +-1: exact products, no branch on a random quadrant.
 template <class Arch>
 inline SinCos sin_cos_turn(float u) {
-  static constexpr double kQuadrantSin[4] = {0, 1, 0, -1}, kQuadrantCos[4] = {1, 0, -1, 0};
-  const double four_u = 4.0 * double(u);
-  const int quadrant = int(four_u + 0.5);
-  const SinCos r = sin_cos_quarter_pi<Arch>((four_u - quadrant) * kHalfPi);
-  const double s = kQuadrantSin[quadrant & 3], c = kQuadrantCos[quadrant & 3];
+  static constexpr float kQuadrantSin[4] = {0, 1, 0, -1}, kQuadrantCos[4] = {1, 0, -1, 0};
+  // 4u + 1.5 2^23 rounds 4u to an integer q in its low mantissa bits; f = 4u - q exactly.
+  constexpr float kRounder = 0x1.8p23f;
+  const float four_u = 4.0f * u, rounded = four_u + kRounder;
+  const unsigned quadrant = std::bit_cast<std::uint32_t>(rounded) & 3u;
+  const SinCos r = sin_cos_quarter_pi<Arch>((four_u - (rounded - kRounder)) * constants::kHalfPiHi);
+  const float s = kQuadrantSin[quadrant], c = kQuadrantCos[quadrant];
   return {s * r.cos + c * r.sin, c * r.cos - s * r.sin};
 }
 
 // u in [0, 1): below 0 to 0, from 1 up to the largest float below 1 (NaN is the caller's).
-template <class Arch>
-inline float unit_interval(float u) {
-  return u > 0 ? std::min(u, detail::kLargestBelowOne) : 0.0f;
-}
+inline float unit_interval(float u) { return std::min(u > 0 ? u : 0.0f, detail::kLargestBelowOne); }
 
-// The polar angle theta(u1) of the fitted inverse CDF (the fine table), in [0, limit].
-template <class Arch>
-inline double polar_angle(const SamplerKernel& kernel, float u1) {
-  using K = SamplerKernel;
-  // Both sides' cells are found and one is selected: u1 falls on either side at random.
-  const bool lower = u1 <= 0.5f;
-  const SamplerCells::Position below = K::kFine.position<Arch>(true, double(u1)),
-                               above = K::kFine.position<Arch>(false, 1.0 - double(u1));
-  const int cell = lower ? below.cell : above.cell;
-  const double x = lower ? below.x : above.x;
-  constexpr int kStride = K::kFine.count();
-  const float* coefficient = kernel.fine.data() + kernel.fine_degree * kStride + cell;
-  double p = double(*coefficient);
-  for (int j = kernel.fine_degree; j-- > 0;)
-    p = mul_add<Arch>(p, x, double(*(coefficient -= kStride)));
-  return std::clamp((lower ? std::sqrt(double(u1)) : 1.0) * p, 0.0, double(kernel.limit));
+// u1's row of SamplerKernel::one_sample and its x there, from the bits of w = 1 - u1 alone
+// (kOneSample has no lower cells: no branch or select on which half u1 falls in, at random).
+// Below 1/2, w is u1's complement rounded, which moves x by at most 2^-21; at u1 = 0, w is
+// the largest float below 1, the last cell's edge.
+struct Row {
+  const float* coefficients;
+  float x;
+};
+inline Row row_of(const SamplerKernel& kernel, float u1) {
+  constexpr SamplerCells kCells = SamplerKernel::kOneSample;
+  static_assert(kCells.lower_cells == 0 && kCells.top_exponent == -1);
+  constexpr int kFractionBits = 23 - kCells.band_bits;
+  const auto bits = std::bit_cast<std::uint32_t>(std::min(1.0f - u1, detail::kLargestBelowOne));
+  const int s = int(bits >> kFractionBits);
+  const int cell = kCells.upper_cell_offset() - s + ((s & (kCells.bands() - 1)) << 1);
+  const float x =
+      std::bit_cast<float>(((bits & ((1u << kFractionBits) - 1)) << kCells.band_bits) |
+                           0x3f800000u) - 1.5f;
+  return {kernel.one_sample.data() + cell * SamplerKernel::kOneSampleStride, x};
 }
 
 template <class Arch>
@@ -263,16 +263,21 @@ inline SampledDirection sample(const SamplerKernel& kernel, float u1, float u2) 
     constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
     return {kNaN, kNaN, kNaN, kNaN};
   }
-  const double theta = polar_angle<Arch>(kernel, unit_interval<Arch>(u1));
-  const SinCos polar = sin_cos_half_pi<Arch>(theta);
-  const SinCos azimuth = sin_cos_turn<Arch>(unit_interval<Arch>(u2));
-  // F = cos^k(c theta) with cos(c theta) = 1 - 2 sin^2(c theta / 2), c theta in [0, pi/2].
-  const double sin_half = sin_cos_quarter_pi<Arch>(0.5 * double(kernel.c) * theta).sin;
-  const double lobe = kutlog::detail::integer_power<Arch>(1 - 2 * sin_half * sin_half, kernel.k);
-  const double density =
-      double(kernel.density_scale) * lobe * (kernel.cosine_weighted ? polar.cos : 1);
-  return {float(polar.sin * azimuth.cos), float(polar.sin * azimuth.sin), float(polar.cos),
-          std::clamp(float(density), 0.0f, kernel.density_scale)};
+  u1 = unit_interval(u1);
+  const Row row = row_of(kernel, u1);
+  const float fitted = quartic<Arch>(row.coefficients, row.x);
+  const float pdf = quartic<Arch>(row.coefficients + SamplerKernel::kOneSampleDegree + 1, row.x);
+  // The fit's weight sqrt(min(2 u1, 1)), exactly 1 above 1/2; the min on the bits (u1 >= 0
+  // orders them as the values), which GCC keeps a cmov where a float min became a branch.
+  const float weight = std::sqrt(std::bit_cast<float>(
+      std::min(std::bit_cast<std::uint32_t>(u1 + u1), std::bit_cast<std::uint32_t>(1.0f))));
+  // s = sin(theta/2): cos(theta) = 1 - 2 s^2, sin(theta) = 2 s cos(theta/2).
+  const float s = std::clamp(weight * fitted, 0.0f, kernel.half_sine_limit);
+  const float cos_theta = mul_add<Arch>(-2.0f * s, s, 1.0f);
+  const float sin_theta = (s + s) * std::sqrt(mul_add<Arch>(-s, s, 1.0f));
+  const SinCos azimuth = sin_cos_turn<Arch>(unit_interval(u2));
+  return {sin_theta * azimuth.cos, sin_theta * azimuth.sin, cos_theta,
+          std::clamp(pdf, 0.0f, kernel.density_scale)};
 }
 
 }  // namespace one_sample
