@@ -52,17 +52,17 @@ double largest_float_at_most(double x) {
 // fit interpolates.
 using ValueAt = std::function<double(bool lower, double argument)>;
 
-// What a fit's polynomial is multiplied by, where the value vanishes as sqrt(u1) at the peak:
-// sqrt(u1) in the lower cells (theta); sqrt(min(2 u1, 1)) in cells of w alone (sin(theta/2),
-// whose kernel takes no branch on u1, and whose weight is then exactly 1 above 1/2). Or
-// nothing (the pdf).
-enum class Weight { sqrt_u1_in_lower_cells, sqrt_of_twice_u1_below_half, none };
+// What a fit's polynomial is multiplied by, so that it keeps its relative accuracy where the
+// value vanishes at the peak: sqrt(u1) in the lower cells for theta (~ sqrt(u1)); min(2 u1, 1)
+// for the haversine sin^2(theta/2) (~ u1), whose cells are all of w and whose kernel takes no
+// branch on u1 (the weight is then exactly 1 above 1/2). Or nothing (the pdf).
+enum class Weight { sqrt_u1_in_lower_cells, twice_u1_below_half, none };
 
 double weight_at(Weight weight, bool lower, double argument) {
   const double u1 = lower ? argument : 1 - argument;
   switch (weight) {
     case Weight::sqrt_u1_in_lower_cells: return lower ? std::sqrt(u1) : 1.0;
-    case Weight::sqrt_of_twice_u1_below_half: return std::sqrt(std::min(2 * u1, 1.0));
+    case Weight::twice_u1_below_half: return std::min(2 * u1, 1.0);
     case Weight::none: return 1.0;
   }
   return 1.0;
@@ -168,12 +168,11 @@ LobeSampler::LobeSampler(double n, int k, double Q, LobeUse use)
   kernel_.c = float(polar.lobe().c());
   kernel_.limit = float(largest_float_at_most(limit_));
   kernel_.density_scale = float(peak);
-  // The coarse fit interpolates the reference; the fine one, whose cells lie within the coarse
-  // cells, interpolates the coarse fit's full series (degree 12, within about 1e-10 G of the
-  // reference), which costs no inverse-CDF solve: the setup solves about 500 instead of 3000.
-  // Consecutive solves are a cell's nodes in order, then the next cell's: the secant through
-  // the last two roots guesses the next one closely, which the solve keeps if it falls inside
-  // its bracket.
+  // The coarse fit interpolates the reference; the rows' fits interpolate the coarse fit's
+  // full series (degree 12, within about 1e-10 G of the reference), which costs no
+  // inverse-CDF solve: the setup solves about 400 times, not 3000. Consecutive solves are a
+  // cell's nodes in order, then the next cell's: the secant through the last two roots
+  // guesses the next one closely, which the solve keeps if it falls inside its bracket.
   double last_xi[2] = {0, 0}, last_theta[2] = {0, 0};
   const Fit coarse = fit_cells(
       [&](bool lower, double argument) {
@@ -186,34 +185,31 @@ LobeSampler::LobeSampler(double n, int k, double Q, LobeUse use)
       },
       limit_, Weight::sqrt_u1_in_lower_cells, K::kCoarse, K::kCoarseMaxDegree,
       {1, K::kCoarseStride, kernel_.coarse.data()});
-  const auto coarse_theta = [&](bool lower, double argument) {
-    return coarse.theta(K::kCoarse, lower, argument);
-  };
-  const Fit fine = fit_cells(coarse_theta, limit_, Weight::sqrt_u1_in_lower_cells, K::kFine, K::kFineMaxDegree,
-                             {1, K::kFine.count(), kernel_.fine.data()});
-  // One sample per call: sin(theta/2), then the pdf of the direction that fit gives (theta =
-  // 2 asin of it as stored), so that the pdf is that of the returned direction to within its
-  // own fit, not also the first fit's.
-  const Storage half_sine{K::kOneSampleStride, 1, kernel_.one_sample.data()};
-  const Storage pdf{K::kOneSampleStride, 1, kernel_.one_sample.data() + K::kOneSampleDegree + 1};
-  // Its cells are all of w = 1 - u1 (argument), u1 <= 1/2 in the top binade.
-  const Fit half_sine_fit = fit_cells(
+  // The rows: the haversine q = sin^2(theta/2), then the pdf of the direction that fit gives
+  // (theta = 2 asin(sqrt(q)) as stored), so that the pdf is that of the returned direction to
+  // within its own fit, not also the first fit's. Their cells are all of w = 1 - u1 (the
+  // argument); u1 <= 1/2 falls in the top binade.
+  const Storage haversine{K::kRowStride, 1, kernel_.rows.data()};
+  const Storage pdf{K::kRowStride, 1, kernel_.rows.data() + K::kRowDegree + 1};
+  const Fit haversine_fit = fit_cells(
       [&](bool, double w) {
-        return std::sin(0.5 * (w >= 0.5 ? fine.theta(K::kFine, true, 1 - w)
-                                         : fine.theta(K::kFine, false, w)));
+        const double half = 0.5 * (w >= 0.5 ? coarse.theta(K::kCoarse, true, 1 - w)
+                                             : coarse.theta(K::kCoarse, false, w));
+        return std::sin(half) * std::sin(half);
       },
-      0.5 * limit_, Weight::sqrt_of_twice_u1_below_half, K::kOneSample, K::kOneSampleDegree, half_sine);
+      std::pow(std::sin(0.5 * limit_), 2), Weight::twice_u1_below_half, K::kRowCells,
+      K::kRowDegree, haversine);
   const Fit pdf_fit = fit_cells(
       [&](bool lower, double argument) {
-        const double s = stored_value(K::kOneSample, Weight::sqrt_of_twice_u1_below_half, K::kOneSampleDegree, half_sine,
-                                      lower, argument);
-        return polar.solid_angle_density(2 * std::asin(std::clamp(s, 0.0, 1.0)));
+        const double q = stored_value(K::kRowCells, Weight::twice_u1_below_half, K::kRowDegree,
+                                      haversine, lower, argument);
+        return polar.solid_angle_density(2 * std::asin(std::sqrt(std::clamp(q, 0.0, 1.0))));
       },
-      peak, Weight::none, K::kOneSample, K::kOneSampleDegree, pdf);
-  kernel_.half_sine_limit = float(largest_float_at_most(std::sin(0.5 * double(kernel_.limit))));
-  kernel_.fine_degree = fine.degree;
+      peak, Weight::none, K::kRowCells, K::kRowDegree, pdf);
+  const double half_limit = std::sin(0.5 * double(kernel_.limit));
+  kernel_.haversine_limit = float(largest_float_at_most(half_limit * half_limit));
   kernel_.coarse_degree = coarse.degree;
-  fit_error_ = std::max({fine.error, coarse.error, half_sine_fit.error, pdf_fit.error});
+  fit_error_ = std::max({coarse.error, haversine_fit.error, pdf_fit.error});
 }
 
 }  // namespace kutlog

@@ -23,11 +23,14 @@
 //   the pdf's power k + 1: OnePerCallGridWithinBounds, OnePerCallRandomLobesWithinBounds;
 //   NaN in u2 not carried: OnePerCallDataRule;
 //   u1 > 1/2 looked up in the next cell: both bounds tests and OnePerCallChiSquare on all 3;
-// and in its per-cell fits (2026-12-04, every arch):
-//   sin(theta) as 2 sin(theta/2), without cos(theta/2): both one-per-call bounds tests and
-//     OnePerCallChiSquare;
-//   the pdf fitted at the angle 2.0001 asin(s): both one-per-call bounds tests (pdf 7.9e-5 of
-//     the peak);
+// and in the rows of the haversine and the pdf (2026-12-04), read one per call on every arch
+// and by the AVX2 and SSE4.1 arrays:
+//   sin(theta) as 2 sqrt(q), without (1 - q): every bounds test of those, OnePerCallChiSquare
+//     and LobeSamplerChiSquarePerArch;
+//   the pdf fitted at the angle 2.0001 asin(sqrt(q)): the same bounds tests (pdf 7.9e-5 of the
+//     peak), no chi-square (the directions are right);
+//   the AVX2 transpose taking the pdf's coefficients from the wrong rows: GridWithinBounds and
+//     RandomLobesWithinBounds on avx2.
 // and on one arch only (the FMA-less sse4.1, both paths):
 //   the azimuth's angle within each quadrant times 1 + 2^-19: the phi bound of GridWithinBounds
 //     and OnePerCallGridWithinBounds on sse4.1 (1.7e-6 rad against 2.1e-7), nothing else;

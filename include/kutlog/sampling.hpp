@@ -56,29 +56,28 @@ struct SamplerCells {
   }
 };
 
-// What the sampling kernels need of one material: the inverse CDF fitted for gathers (fine)
-// and for AVX-512's two-register permutes (coarse); for one sample per call, sin(theta / 2)
-// and the pdf fitted in kOneSample's cells (all found from the bits of 1 - u1), so that no
-// sine of theta or power is left to evaluate.
+// What the sampling kernels need of one material: the inverse CDF fitted for AVX-512's
+// two-register permutes (coarse); and per cell of kRowCells (all found from the bits of
+// 1 - u1), the haversine sin^2(theta/2) and the pdf of the direction it gives (rows), which
+// leave no sine of theta or power to evaluate: the one-sample call's and the other archs'.
 struct SamplerKernel {
-  static constexpr SamplerCells kFine{32, 4}, kCoarse{8, 0}, kOneSample{0, 3, -1};
-  static constexpr int kFineMaxDegree = 5, kCoarseMaxDegree = 12;
+  static constexpr SamplerCells kCoarse{8, 0}, kRowCells{0, 4, -1};
+  static constexpr int kCoarseMaxDegree = 12;
   static constexpr int kCoarseStride = 32;  // two registers of 16 floats per coefficient
-  // One cell's row in `one_sample`: sin(theta/2) / sqrt(min(2 u1, 1)), then the pdf, each of
-  // degree kOneSampleDegree (higher coefficients zero where a lower degree fits).
-  static constexpr int kOneSampleDegree = 4, kOneSampleStride = 2 * (kOneSampleDegree + 1);
+  // A cell's row: sin^2(theta/2) / min(2 u1, 1), then the pdf, cubics (zeros above a lower
+  // degree); 8 floats, half a cache line, that SIMD loads whole and transposes.
+  static constexpr int kRowDegree = 3, kRowStride = 2 * (kRowDegree + 1);
 
-  int fine_degree = 0, coarse_degree = 0;  // of every cell's polynomial
+  int coarse_degree = 0;  // of every cell's polynomial
   int k = 1;
   bool cosine_weighted = true;  // microfacet: the pdf has the factor cos(theta)
   float c = 1;
   float limit = 0;          // G rounded down to a float
   float density_scale = 0;  // the pdf at theta = 0, the peak
-  // Coefficient j of cell i at [j * stride + i]: one row per coefficient.
-  std::array<float, kFine.count() * (kFineMaxDegree + 1)> fine{};
+  float haversine_limit = 0;  // sin^2(G / 2) rounded down to a float
+  // Coefficient j of cell i at [j * kCoarseStride + i]: one row per coefficient.
   std::array<float, kCoarseStride*(kCoarseMaxDegree + 1)> coarse{};
-  float half_sine_limit = 0;  // sin(G / 2) rounded down to a float
-  std::array<float, kOneSample.count() * kOneSampleStride> one_sample{};
+  alignas(32) std::array<float, kRowCells.count() * kRowStride> rows{};
 };
 
 struct DirectionSamples {
@@ -106,7 +105,7 @@ class LobeSampler {
   double Q() const { return Q_; }
   LobeUse use() const { return use_; }
   double limit() const { return limit_; }
-  // The largest fit error seen at setup: theta's in units of G, sin(theta/2)'s of G/2, the
+  // The largest fit error seen at setup: theta's in units of G, sin^2(theta/2)'s of its top, the
   // pdf's of the peak pdf.
   double fit_error() const { return fit_error_; }
   const SamplerKernel& kernel() const { return kernel_; }
@@ -114,7 +113,7 @@ class LobeSampler {
   void sample(const float* u1, const float* u2, DirectionSamples out,
               std::size_t count) const noexcept;
 
-  // One sample, with the arrays' contract (scalar float, from SamplerKernel::one_sample).
+  // One sample, with the arrays' contract (scalar float, from SamplerKernel::rows).
   SampledDirection sample(float u1, float u2) const noexcept;
   // Floats only: a double u1 just below 1 would round to 1 without a word.
   template <class U1, class U2>

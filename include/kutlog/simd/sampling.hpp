@@ -124,50 +124,72 @@ class PreparedSampler {
       : kernel_(kernel), half_c_(0.5f * kernel.c), limit_(kernel.limit),
         peak_(kernel.density_scale) {}
 
-  // The polar angle theta(u1) of the fitted inverse CDF, in [0, limit]. AVX-512 permutes the
-  // coarse table (one instruction, not 16 loads); AVX2 gathers with its own instruction.
-  F polar_angle(F u1) const {
-    using K = SamplerKernel;
-    F p;
-    xsimd::batch_bool<float, Arch> lower;
 #if XSIMD_WITH_AVX512F
-    if constexpr (arch_of<Arch, xsimd::avx512f>) {
-      const detail::CellPosition<Arch> at = detail::locate<K::kCoarse>(u1);
-      p = detail::cell_polynomial(kernel_.coarse.data(), kernel_.coarse_degree, K::kCoarseStride,
-                                  at, [](const float* row, I cell) -> F {
-                                    return _mm512_permutex2var_ps(_mm512_loadu_ps(row), cell,
-                                                                  _mm512_loadu_ps(row + 16));
-                                  });
-      lower = at.lower;
-    } else
-#endif
-    {
-      const detail::CellPosition<Arch> at = detail::locate<K::kFine>(u1);
-      p = detail::cell_polynomial(kernel_.fine.data(), kernel_.fine_degree, K::kFine.count(), at,
-                                  [](const float* row, I cell) -> F {
-#if XSIMD_WITH_AVX2
-                                    if constexpr (arch_of<Arch, xsimd::avx2>)
-                                      return _mm256_i32gather_ps(row, cell, sizeof(float));
-                                    else
-#endif
-                                      return F::gather(row, cell);
-                                  });
-      lower = at.lower;
-    }
-    const F theta = xsimd::select(lower, xsimd::sqrt(u1) * p, p);
+  // The polar angle theta(u1) of the coarse fit of the inverse CDF, in [0, limit], its
+  // coefficients looked up by permutes (one instruction, not 16 loads).
+  F polar_angle(F u1) const requires(arch_of<Arch, xsimd::avx512f>) {
+    using K = SamplerKernel;
+    const detail::CellPosition<Arch> at = detail::locate<K::kCoarse>(u1);
+    const F p = detail::cell_polynomial(
+        kernel_.coarse.data(), kernel_.coarse_degree, K::kCoarseStride, at,
+        [](const float* row, I cell) -> F {
+          return _mm512_permutex2var_ps(_mm512_loadu_ps(row), cell, _mm512_loadu_ps(row + 16));
+        });
+    const F theta = xsimd::select(at.lower, xsimd::sqrt(u1) * p, p);
     return xsimd::min(xsimd::max(theta, F(0.0f)), limit_);
   }
 
-  SampleBatch<Arch> operator()(F u1, F u2) const {
+  // AVX-512: theta from the coarse fit, then its sine and cosine, and the pdf from c theta.
+  SampleBatch<Arch> from_polar_angle(F u1, F u2) const requires(arch_of<Arch, xsimd::avx512f>) {
     const F theta = polar_angle(detail::unit_interval(u1));
     const auto [sin_theta, cos_theta] = detail::sin_cos_halfpi(theta);
-    const auto [sin_phi, cos_phi] = detail::sin_cos_turn(detail::unit_interval(u2));
     // F = cos^k(c theta), cos(c theta) = 1 - 2 sin^2(c theta / 2), c theta in [0, pi/2].
-    const F half_angle = half_c_ * theta;
-    const F sin_half = detail::sin_cos_quarter_pi(half_angle).hi;
-    const F base = neg_mul_add(F(2.0f) * sin_half, sin_half, F(1.0f));
-    const F lobe = kutlog::detail::integer_power(base, kernel_.k);
+    const F sin_half = detail::sin_cos_quarter_pi(half_c_ * theta).hi;
+    const F lobe = kutlog::detail::integer_power(neg_mul_add(F(2.0f) * sin_half, sin_half, F(1.0f)),
+                                                 kernel_.k);
     const F density = kernel_.cosine_weighted ? peak_ * lobe * cos_theta : peak_ * lobe;
+    return finish(u1, u2, sin_theta, cos_theta, density);
+  }
+#endif
+
+  // The other archs: the cell's row of SamplerKernel::rows (the one-sample call's), the
+  // haversine q = sin^2(theta/2) and the pdf from its two cubics, then cos(theta) = 1 - 2 q and
+  // sin(theta) = 2 sqrt(q (1 - q)): no sine of theta and no power.
+  SampleBatch<Arch> from_rows(F u1, F u2) const {
+    using K = SamplerKernel;
+    constexpr SamplerCells kCells = K::kRowCells;
+    constexpr int kFractionBits = 23 - kCells.band_bits;
+    const F u = detail::unit_interval(u1);
+    const I bits = xsimd::bitwise_cast<I>(xsimd::min(F(1.0f) - u, F(detail::kLargestBelowOne)));
+    const I s = bits >> kFractionBits;
+    const I cell = I(kCells.upper_cell_offset()) - s + ((s & I(kCells.bands() - 1)) << 1);
+    const F x = xsimd::bitwise_cast<F>(((bits & I((1 << kFractionBits) - 1)) << kCells.band_bits) |
+                                       I(0x3f800000)) - F(1.5f);
+    const std::array<F, K::kRowStride> c = row_coefficients(cell);
+    const F square = x * x;
+    const auto cubic = [&](std::size_t first) {
+      return mul_add(square, mul_add(c[first + 3], x, c[first + 2]),
+                     mul_add(c[first + 1], x, c[first]));
+    };
+    static_assert(K::kRowDegree == 3 && K::kRowStride == 8);
+    const F weight = xsimd::min(u + u, F(1.0f));  // exactly 1 above 1/2
+    const F q = xsimd::min(xsimd::max(weight * cubic(0), F(0.0f)), F(kernel_.haversine_limit));
+    return finish(u1, u2, F(2.0f) * xsimd::sqrt(neg_mul_add(q, q, q)),
+                  neg_mul_add(F(2.0f), q, F(1.0f)), cubic(4));
+  }
+
+  SampleBatch<Arch> operator()(F u1, F u2) const {
+#if XSIMD_WITH_AVX512F
+    if constexpr (arch_of<Arch, xsimd::avx512f>) return from_polar_angle(u1, u2);
+#endif
+    return from_rows(u1, u2);
+  }
+
+ private:
+  // The direction from theta's sine and cosine and the azimuth 2 pi u2; the pdf clamped to
+  // [0, peak]; NaN in every output where u1 or u2 is NaN.
+  SampleBatch<Arch> finish(F u1, F u2, F sin_theta, F cos_theta, F density) const {
+    const auto [sin_phi, cos_phi] = detail::sin_cos_turn(detail::unit_interval(u2));
     const auto valid = (u1 == u1) & (u2 == u2);
     const F nan(std::numeric_limits<float>::quiet_NaN());
     return {xsimd::select(valid, sin_theta * cos_phi, nan),
@@ -175,14 +197,64 @@ class PreparedSampler {
             xsimd::select(valid, detail::clamp_zero_to(density, peak_), nan)};
   }
 
- private:
+  // Each lane's row of SamplerKernel::rows, transposed: coefficient j of every lane in batch
+  // j. Whole-row loads and shuffles, where gathers cost a load per lane and coefficient.
+  std::array<F, SamplerKernel::kRowStride> row_coefficients(I cell) const {
+    constexpr std::size_t N = F::size;
+    alignas(64) std::int32_t cells[N];
+    cell.store_aligned(cells);
+    const auto row = [&](std::size_t lane) {
+      return kernel_.rows.data() + std::ptrdiff_t(cells[lane]) * SamplerKernel::kRowStride;
+    };
+    std::array<F, SamplerKernel::kRowStride> c;
+#if XSIMD_WITH_AVX2
+    if constexpr (arch_of<Arch, xsimd::avx2> && N == 8) {
+      // An 8x8 transpose: pairs of rows interleaved, then pairs of pairs, then the halves.
+      __m256 r[8], pairs[8], quads[8];
+      for (std::size_t i = 0; i < 8; ++i) r[i] = _mm256_loadu_ps(row(i));
+      for (std::size_t i = 0; i < 8; i += 2) {
+        pairs[i] = _mm256_unpacklo_ps(r[i], r[i + 1]);
+        pairs[i + 1] = _mm256_unpackhi_ps(r[i], r[i + 1]);
+      }
+      for (std::size_t i = 0; i < 8; i += 4) {
+        quads[i] = _mm256_shuffle_ps(pairs[i], pairs[i + 2], 0x44);
+        quads[i + 1] = _mm256_shuffle_ps(pairs[i], pairs[i + 2], 0xEE);
+        quads[i + 2] = _mm256_shuffle_ps(pairs[i + 1], pairs[i + 3], 0x44);
+        quads[i + 3] = _mm256_shuffle_ps(pairs[i + 1], pairs[i + 3], 0xEE);
+      }
+      for (std::size_t j = 0; j < 4; ++j) {
+        c[j] = _mm256_permute2f128_ps(quads[j], quads[4 + j], 0x20);
+        c[4 + j] = _mm256_permute2f128_ps(quads[j], quads[4 + j], 0x31);
+      }
+      return c;
+    }
+#endif
+#if XSIMD_WITH_SSE4_1
+    if constexpr (std::is_same_v<Arch, xsimd::sse4_1>) {
+      for (std::size_t half = 0; half < 2; ++half) {
+        __m128 r0 = _mm_loadu_ps(row(0) + 4 * half), r1 = _mm_loadu_ps(row(1) + 4 * half),
+               r2 = _mm_loadu_ps(row(2) + 4 * half), r3 = _mm_loadu_ps(row(3) + 4 * half);
+        _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+        c[4 * half] = r0, c[4 * half + 1] = r1, c[4 * half + 2] = r2, c[4 * half + 3] = r3;
+      }
+      return c;
+    }
+#endif
+    for (std::size_t j = 0; j < c.size(); ++j) {
+      alignas(64) float lanes[N];
+      for (std::size_t i = 0; i < N; ++i) lanes[i] = row(i)[j];
+      c[j] = F::load_aligned(lanes);
+    }
+    return c;
+  }
+
   const SamplerKernel& kernel_;
   F half_c_, limit_, peak_;
 };
 
 // One (u1, u2) per call, a path tracer's one direction per bounce, in float scalars with no
-// branch on the random numbers: the setup's per-cell fits of sin(theta/2) and of the pdf
-// (SamplerKernel::one_sample) leave two square roots and the azimuth's sine and cosine.
+// branch on the random numbers: the setup's per-cell fits of sin^2(theta/2) and of the pdf
+// (SamplerKernel::rows) leave one square root and the azimuth's sine and cosine.
 // Templates on the arch, which brings its FMA: each arch's TU compiles its own.
 namespace one_sample {
 
@@ -198,14 +270,12 @@ inline float mul_add(float a, float b, float c) {
     return a * b + c;
 }
 
-// c[0] + c[1] x + ... + c[4] x^4 in pairs (Estrin's scheme): three steps deep, not four.
+// c[0] + c[1] x + c[2] x^2 + c[3] x^3 in pairs (Estrin's scheme): two steps deep, not three.
 // Always the full degree: a fit of lower degree has zeros above it, cheaper than a branch.
 template <class Arch>
-inline float quartic(const float* c, float x) {
-  static_assert(SamplerKernel::kOneSampleDegree == 4);
-  const float square = x * x;
-  const float high = mul_add<Arch>(c[4], square, mul_add<Arch>(c[3], x, c[2]));
-  return mul_add<Arch>(square, high, mul_add<Arch>(c[1], x, c[0]));
+inline float cubic(const float* c, float x) {
+  static_assert(SamplerKernel::kRowDegree == 3);
+  return mul_add<Arch>(x * x, mul_add<Arch>(c[3], x, c[2]), mul_add<Arch>(c[1], x, c[0]));
 }
 
 // sin and cos of |r| <= pi/4 by the cores of kutlog's sin and cos, as the arrays'.
@@ -236,8 +306,8 @@ inline SinCos sin_cos_turn(float u) {
 // u in [0, 1): below 0 to 0, from 1 up to the largest float below 1 (NaN is the caller's).
 inline float unit_interval(float u) { return std::min(u > 0 ? u : 0.0f, detail::kLargestBelowOne); }
 
-// u1's row of SamplerKernel::one_sample and its x there, from the bits of w = 1 - u1 alone
-// (kOneSample has no lower cells: no branch or select on which half u1 falls in, at random).
+// u1's row of SamplerKernel::rows and its x there, from the bits of w = 1 - u1 alone
+// (kRowCells has no lower cells: no branch or select on which half u1 falls in, at random).
 // Below 1/2, w is u1's complement rounded, which moves x by at most 2^-21; at u1 = 0, w is
 // the largest float below 1, the last cell's edge.
 struct Row {
@@ -245,7 +315,7 @@ struct Row {
   float x;
 };
 inline Row row_of(const SamplerKernel& kernel, float u1) {
-  constexpr SamplerCells kCells = SamplerKernel::kOneSample;
+  constexpr SamplerCells kCells = SamplerKernel::kRowCells;
   static_assert(kCells.lower_cells == 0 && kCells.top_exponent == -1);
   constexpr int kFractionBits = 23 - kCells.band_bits;
   const auto bits = std::bit_cast<std::uint32_t>(std::min(1.0f - u1, detail::kLargestBelowOne));
@@ -254,7 +324,7 @@ inline Row row_of(const SamplerKernel& kernel, float u1) {
   const float x =
       std::bit_cast<float>(((bits & ((1u << kFractionBits) - 1)) << kCells.band_bits) |
                            0x3f800000u) - 1.5f;
-  return {kernel.one_sample.data() + cell * SamplerKernel::kOneSampleStride, x};
+  return {kernel.rows.data() + cell * SamplerKernel::kRowStride, x};
 }
 
 template <class Arch>
@@ -265,16 +335,16 @@ inline SampledDirection sample(const SamplerKernel& kernel, float u1, float u2) 
   }
   u1 = unit_interval(u1);
   const Row row = row_of(kernel, u1);
-  const float fitted = quartic<Arch>(row.coefficients, row.x);
-  const float pdf = quartic<Arch>(row.coefficients + SamplerKernel::kOneSampleDegree + 1, row.x);
-  // The fit's weight sqrt(min(2 u1, 1)), exactly 1 above 1/2; the min on the bits (u1 >= 0
-  // orders them as the values), which GCC keeps a cmov where a float min became a branch.
-  const float weight = std::sqrt(std::bit_cast<float>(
-      std::min(std::bit_cast<std::uint32_t>(u1 + u1), std::bit_cast<std::uint32_t>(1.0f))));
-  // s = sin(theta/2): cos(theta) = 1 - 2 s^2, sin(theta) = 2 s cos(theta/2).
-  const float s = std::clamp(weight * fitted, 0.0f, kernel.half_sine_limit);
-  const float cos_theta = mul_add<Arch>(-2.0f * s, s, 1.0f);
-  const float sin_theta = (s + s) * std::sqrt(mul_add<Arch>(-s, s, 1.0f));
+  const float fitted = cubic<Arch>(row.coefficients, row.x);
+  const float pdf = cubic<Arch>(row.coefficients + SamplerKernel::kRowDegree + 1, row.x);
+  // The fit's weight min(2 u1, 1), exactly 1 above 1/2; the min on the bits (u1 >= 0 orders
+  // them as the values), which GCC keeps a cmov where a float min became a branch.
+  const float weight = std::bit_cast<float>(
+      std::min(std::bit_cast<std::uint32_t>(u1 + u1), std::bit_cast<std::uint32_t>(1.0f)));
+  // q = sin^2(theta/2): cos(theta) = 1 - 2 q, sin(theta) = 2 sqrt(q (1 - q)).
+  const float q = std::clamp(weight * fitted, 0.0f, kernel.haversine_limit);
+  const float cos_theta = mul_add<Arch>(-2.0f, q, 1.0f);
+  const float sin_theta = 2.0f * std::sqrt(mul_add<Arch>(-q, q, q));
   const SinCos azimuth = sin_cos_turn<Arch>(unit_interval(u2));
   return {sin_theta * azimuth.cos, sin_theta * azimuth.sin, cos_theta,
           std::clamp(pdf, 0.0f, kernel.density_scale)};
