@@ -47,20 +47,24 @@ inline Pair<floats<Arch>> sin_cos_halfpi(floats<Arch> theta) {
 }
 
 // sin and cos of the azimuth 2 pi u, u in [0, 1): 4u = q + f exactly, q an integer in 0..4,
-// |f| <= 1/2, so 2 pi u = q pi/2 + r, r = f pi/2.
+// |f| <= 1/2, so 2 pi u = q pi/2 + r, r = f pi/2. 4u + 1.5 2^23 rounds 4u to q and holds it
+// in its low mantissa bits, so the quadrant's swap and signs are bit operations.
 template <class Arch>
 inline Pair<floats<Arch>> sin_cos_turn(floats<Arch> u) {
   using F = floats<Arch>;
-  const F four_u = u * F(4.0f), quadrant = xsimd::nearbyint(four_u);
-  const auto [sin_r, cos_r] = sin_cos_quarter_pi((four_u - quadrant) * F(constants::kHalfPiHi));
-  // Quadrant 1: (cos, sin) = (-sin r, cos r); 2: (-cos r, -sin r); 3: (sin r, -cos r); 4 = 0.
-  const auto odd = (quadrant == F(1.0f)) | (quadrant == F(3.0f));
-  const F negative_cos = xsimd::select((quadrant == F(1.0f)) | (quadrant == F(2.0f)), F(-0.0f),
-                                       F(0.0f));
-  const F negative_sin = xsimd::select((quadrant == F(2.0f)) | (quadrant == F(3.0f)), F(-0.0f),
-                                       F(0.0f));
-  return {xsimd::select(odd, cos_r, sin_r) ^ negative_sin,
-          xsimd::select(odd, sin_r, cos_r) ^ negative_cos};
+  using I = ints<Arch>;
+  constexpr float kRounder = 0x1.8p23f;
+  const F four_u = u * F(4.0f), rounded = four_u + F(kRounder);
+  const auto [sin_r, cos_r] =
+      sin_cos_quarter_pi((four_u - (rounded - F(kRounder))) * F(constants::kHalfPiHi));
+  // Quadrant q: (sin, cos) = (s, c), (c, -s), (-s, -c), (-c, s): swapped where q is odd, sin
+  // negated where bit 1 of q is set, cos where bit 1 of q + 1 is (bit 1 moved to the sign).
+  const I q = xsimd::bitwise_cast<I>(rounded);
+  const auto odd = xsimd::bool_cast((q & I(1)) != I(0));
+  const F sin_sign = xsimd::bitwise_cast<F>((q << 30) & I(std::numeric_limits<int>::min()));
+  const F cos_sign =
+      xsimd::bitwise_cast<F>(((q + I(1)) << 30) & I(std::numeric_limits<int>::min()));
+  return {xsimd::select(odd, cos_r, sin_r) ^ sin_sign, xsimd::select(odd, sin_r, cos_r) ^ cos_sign};
 }
 
 // The cell of u1 in [0, 1) in the layout `cells` (kutlog/sampling.hpp's SamplerCells), and
@@ -201,10 +205,13 @@ class PreparedSampler {
   // j. Whole-row loads and shuffles, where gathers cost a load per lane and coefficient.
   std::array<F, SamplerKernel::kRowStride> row_coefficients(I cell) const {
     constexpr std::size_t N = F::size;
-    alignas(64) std::int32_t cells[N];
-    cell.store_aligned(cells);
+    constexpr int kRowBytes = SamplerKernel::kRowStride * int(sizeof(float));
+    // Byte offsets, unsigned: each lane's address is then one add, with no sign extension.
+    alignas(64) std::uint32_t offsets[N];
+    (cell * I(kRowBytes)).store_aligned(reinterpret_cast<std::int32_t*>(offsets));
     const auto row = [&](std::size_t lane) {
-      return kernel_.rows.data() + std::ptrdiff_t(cells[lane]) * SamplerKernel::kRowStride;
+      return reinterpret_cast<const float*>(
+          reinterpret_cast<const char*>(kernel_.rows.data()) + offsets[lane]);
     };
     std::array<F, SamplerKernel::kRowStride> c;
 #if XSIMD_WITH_AVX2
