@@ -189,25 +189,30 @@ LobeSampler::LobeSampler(double n, int k, double Q, LobeUse use)
   // (theta = 2 asin(sqrt(q)) as stored), so that the pdf is that of the returned direction to
   // within its own fit, not also the first fit's. Their cells are all of w = 1 - u1 (the
   // argument); u1 <= 1/2 falls in the top binade.
+  const double half_limit = std::sin(0.5 * double(kernel_.limit));
+  const int half_exponent = std::ilogb(half_limit) + 1;  // sin(G/2) < 2^half_exponent
+  kernel_.haversine_scale = std::ldexp(1.0f, 2 * half_exponent);
+  kernel_.sine_scale = std::ldexp(1.0f, half_exponent + 1);
+  kernel_.haversine_limit =
+      float(largest_float_at_most(half_limit * half_limit / kernel_.haversine_scale));
   const Storage haversine{K::kRowStride, 1, kernel_.rows.data()};
   const Storage pdf{K::kRowStride, 1, kernel_.rows.data() + K::kRowDegree + 1};
   const Fit haversine_fit = fit_cells(
       [&](bool, double w) {
         const double half = 0.5 * (w >= 0.5 ? coarse.theta(K::kCoarse, true, 1 - w)
                                              : coarse.theta(K::kCoarse, false, w));
-        return std::sin(half) * std::sin(half);
+        return std::sin(half) * std::sin(half) / kernel_.haversine_scale;
       },
-      std::pow(std::sin(0.5 * limit_), 2), Weight::twice_u1_below_half, K::kRowCells,
-      K::kRowDegree, haversine);
+      half_limit * half_limit / kernel_.haversine_scale, Weight::twice_u1_below_half,
+      K::kRowCells, K::kRowDegree, haversine);
   const Fit pdf_fit = fit_cells(
       [&](bool lower, double argument) {
-        const double q = stored_value(K::kRowCells, Weight::twice_u1_below_half, K::kRowDegree,
+        const double q = kernel_.haversine_scale *
+                         stored_value(K::kRowCells, Weight::twice_u1_below_half, K::kRowDegree,
                                       haversine, lower, argument);
         return polar.solid_angle_density(2 * std::asin(std::sqrt(std::clamp(q, 0.0, 1.0))));
       },
       peak, Weight::none, K::kRowCells, K::kRowDegree, pdf);
-  const double half_limit = std::sin(0.5 * double(kernel_.limit));
-  kernel_.haversine_limit = float(largest_float_at_most(half_limit * half_limit));
   kernel_.coarse_degree = coarse.degree;
   fit_error_ = std::max({coarse.error, haversine_fit.error, pdf_fit.error});
 }

@@ -30,7 +30,14 @@
 //   the pdf fitted at the angle 2.0001 asin(sqrt(q)): the same bounds tests (pdf 7.9e-5 of the
 //     peak), no chi-square (the directions are right);
 //   the AVX2 transpose taking the pdf's coefficients from the wrong rows: GridWithinBounds and
-//     RandomLobesWithinBounds on avx2.
+//     RandomLobesWithinBounds on avx2;
+//   the haversine unscaled (scale 1): NarrowestLobesWithinBounds on avx2 and sse4.1 and
+//     OnePerCallNarrowestLobesWithinBounds on every arch (theta up to 1.7e-4 G, from float
+//     subnormals);
+// and in AVX-512's batches (2026-12-04):
+//   the lobe's power in float for every k: RandomLobesWithinBounds and
+//     NarrowestLobesWithinBounds on avx512 (pdf up to 2.3e-6 of the peak at k = 48; the
+//     random lobes took k up to 8 before, where it stays within the bound).
 // and on one arch only (the FMA-less sse4.1, both paths):
 //   the azimuth's angle within each quadrant times 1 + 2^-19: the phi bound of GridWithinBounds
 //     and OnePerCallGridWithinBounds on sse4.1 (1.7e-6 rad against 2.1e-7), nothing else;
@@ -43,6 +50,7 @@
 #include <cstdint>
 #include <limits>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -95,10 +103,10 @@ Samples draw_one_per_call(const LobeSampler& sampler, const std::vector<float>& 
 
 // u1 densely over [0, 1): 2^14 evenly spaced, the tiny ones 2^-m, and the 4096 largest floats
 // below 1 (where theta approaches the cut-off as a root of 1 - u1).
-std::vector<float> dense_u1() {
+std::vector<float> dense_u1(int tiniest_exponent = 140) {
   std::vector<float> u;
   for (int i = 0; i < 1 << 14; ++i) u.push_back(float(i) * 0x1p-14f);
-  for (int m = 16; m <= 140; m += 4) u.push_back(std::ldexp(1.0f, -m));
+  for (int m = 16; m <= tiniest_exponent; m += 4) u.push_back(std::ldexp(1.0f, -m));
   for (int m = 1; m <= 4096; ++m) u.push_back(1.0f - float(m) * 0x1p-24f);
   return u;
 }
@@ -109,10 +117,11 @@ struct Errors {
 };
 
 // The bounds' measure for one lobe and use, with every sample's hard properties asserted.
-void measure(Draw draw, const LobeCase& lobe, LobeUse use, Errors& errors) {
+void measure(Draw draw, const LobeCase& lobe, LobeUse use, Errors& errors,
+             int tiniest_exponent = 140) {
   const ref::PolarAngleDistribution polar(lobe.n, lobe.k, lobe.Q, use);
   const LobeSampler sampler(lobe.n, lobe.k, lobe.Q, use);
-  const std::vector<float> u1 = dense_u1();
+  const std::vector<float> u1 = dense_u1(tiniest_exponent);
   std::vector<float> u2(u1.size());
   for (std::size_t i = 0; i < u2.size(); ++i) u2[i] = float((i * 2654435761u) % 4096) / 4096;
   const Samples samples = draw(sampler, u1, u2);
@@ -164,11 +173,11 @@ void grid_within_bounds(Draw draw) {
   EXPECT_GE(largest.phi, kSamplerBound.phi_error / 4);
 }
 
-// Off the grid: n log-uniform in [0.5, 10^6] (below k too), k in 1..8, Q in [0.01, 0.99].
+// Off the grid: n log-uniform in [0.5, 10^6] (below k too), k in 1..64, Q in [0.01, 0.99].
 void random_lobes_within_bounds(Draw draw) {
   std::mt19937_64 engine(14);
   std::uniform_real_distribution<double> log_n(std::log(0.5), std::log(1e6)), anchor(0.01, 0.99);
-  std::uniform_int_distribution<int> power(1, 8);
+  std::uniform_int_distribution<int> power(1, 64);
   for (int trial = 0; trial < 16; ++trial) {
     const LobeCase lobe{std::exp(log_n(engine)), power(engine), anchor(engine)};
     const LobeUse use = kUses[trial % 2];
@@ -206,6 +215,23 @@ void data_rule(Draw draw) {
   }
 }
 
+// Narrow lobes near the top of the domain, n = 3e37 for k in {1, 64} and Q in {0.01, 0.99}:
+// G near 3e-19, sin^2(theta/2) below the smallest normal float. u1 down to 2^-60: below, the
+// direction's x and y fall below the smallest normal float, whose spacing no bound in
+// radians survives (the hard properties still hold there, as measure asserts elsewhere).
+void narrowest_lobes_within_bounds(Draw draw) {
+  for (double Q : {0.01, 0.99})
+    for (int k : {1, 64})
+      for (LobeUse use : kUses) {
+        const LobeCase lobe{3e37, k, Q};
+        Errors errors;
+        ASSERT_NO_FATAL_FAILURE(measure(draw, lobe, use, errors, 60));
+        testing::Message what;
+        what << use_name(use) << " n=" << lobe.n << " k=" << lobe.k << " Q=" << lobe.Q;
+        expect_within_bounds(errors, what.GetString());
+      }
+}
+
 class LobeSamplerPerArch : public testing::TestWithParam<Arch> {
  protected:
   ScopedArch forced{GetParam()};
@@ -218,6 +244,12 @@ TEST_P(LobeSamplerPerArch, OnePerCallRandomLobesWithinBounds) {
   random_lobes_within_bounds(draw_one_per_call);
 }
 TEST_P(LobeSamplerPerArch, OnePerCallDataRule) { data_rule(draw_one_per_call); }
+TEST_P(LobeSamplerPerArch, NarrowestLobesWithinBounds) {
+  narrowest_lobes_within_bounds(draw_arrays);
+}
+TEST_P(LobeSamplerPerArch, OnePerCallNarrowestLobesWithinBounds) {
+  narrowest_lobes_within_bounds(draw_one_per_call);
+}
 
 // The data rule, and every count gives what the whole array gives (the tails are partial
 // batches).

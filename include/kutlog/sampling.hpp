@@ -64,7 +64,7 @@ struct SamplerKernel {
   static constexpr SamplerCells kCoarse{8, 0}, kRowCells{0, 4, -1};
   static constexpr int kCoarseMaxDegree = 12;
   static constexpr int kCoarseStride = 32;  // two registers of 16 floats per coefficient
-  // A cell's row: sin^2(theta/2) / min(2 u1, 1), then the pdf, cubics (zeros above a lower
+  // A cell's row: sin^2(theta/2) / (haversine_scale min(2 u1, 1)), then the pdf, cubics (zeros above a lower
   // degree); 8 floats, half a cache line, that SIMD loads whole and transposes.
   static constexpr int kRowDegree = 3, kRowStride = 2 * (kRowDegree + 1);
 
@@ -74,7 +74,11 @@ struct SamplerKernel {
   float c = 1;
   float limit = 0;          // G rounded down to a float
   float density_scale = 0;  // the pdf at theta = 0, the peak
-  float haversine_limit = 0;  // sin^2(G / 2) rounded down to a float
+  // The rows hold the haversine over haversine_scale, a power of 4 at or above sin^2(G / 2):
+  // for the narrowest lobes sin^2(theta/2) is below the smallest normal float, its quotient
+  // is not. sine_scale = 2 sqrt(haversine_scale), exact.
+  float haversine_scale = 1, sine_scale = 2;
+  float haversine_limit = 0;  // sin^2(G / 2) / haversine_scale, rounded down
   // Coefficient j of cell i at [j * kCoarseStride + i]: one row per coefficient.
   std::array<float, kCoarseStride*(kCoarseMaxDegree + 1)> coarse{};
   alignas(32) std::array<float, kRowCells.count() * kRowStride> rows{};

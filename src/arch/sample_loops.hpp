@@ -10,12 +10,11 @@
 namespace kutlog::detail {
 
 // The sampler over arrays: four outputs per pair of inputs, the tail as a partial batch.
-template <class Arch>
-void sample_lobe_array(const SamplerKernel& kernel, const float* u1, const float* u2,
-                       DirectionSamples out, std::size_t count) {
+template <class Arch, class Sampler>
+void sample_lobe_batches(const Sampler& sampler, const float* u1, const float* u2,
+                         DirectionSamples out, std::size_t count) {
   using F = floats_of<Arch>;
   constexpr std::size_t N = F::size;
-  const simd::PreparedSampler<Arch> sampler(kernel);
   std::size_t i = 0;
   for (; i + N <= count; i += N) {
     const simd::SampleBatch<Arch> sample = sampler(F::load_unaligned(u1 + i), F::load_unaligned(u2 + i));
@@ -32,6 +31,16 @@ void sample_lobe_array(const SamplerKernel& kernel, const float* u1, const float
   store_partial<Arch>(Arch{}, out.y + i, sample.y, tail);
   store_partial<Arch>(Arch{}, out.z + i, sample.z, tail);
   store_partial<Arch>(Arch{}, out.pdf + i, sample.pdf, tail);
+}
+
+template <class Arch>
+void sample_lobe_array(const SamplerKernel& kernel, const float* u1, const float* u2,
+                       DirectionSamples out, std::size_t count) {
+  if constexpr (simd::PreparedSampler<Arch>::kRaisesPower)
+    if (simd::PreparedSampler<Arch>::double_power_needed(kernel))
+      return sample_lobe_batches<Arch>(simd::PreparedSampler<Arch, true>(kernel), u1, u2, out,
+                                       count);
+  sample_lobe_batches<Arch>(simd::PreparedSampler<Arch>(kernel), u1, u2, out, count);
 }
 
 }  // namespace kutlog::detail

@@ -117,10 +117,25 @@ inline floats<Arch> unit_interval(floats<Arch> u) {
 }
 }  // namespace detail
 
-// A SamplerKernel with its constants broadcast once, for loops over many batches.
-template <class Arch>
+// A SamplerKernel with its constants broadcast once, for loops over many batches. On AVX-512,
+// kDoublePower raises the lobe's base to the k-th power in double lanes: the loop chooses
+// it once (double_power_needed), not each batch.
+template <class Arch, bool kDoublePower = false>
 class PreparedSampler {
  public:
+  // In float, the base's rounding (2^-24 near 1) and each squaring's grow k-fold in F, within
+  // the pdf bound up to this k (the grid and random lobes measure it).
+  static constexpr int kFloatPowerMaxK = 5;
+  // Whether this arch's batches raise the lobe to a power at all (AVX-512's theta path).
+#if XSIMD_WITH_AVX512F
+  static constexpr bool kRaisesPower = arch_of<Arch, xsimd::avx512f>;
+#else
+  static constexpr bool kRaisesPower = false;
+#endif
+  static bool double_power_needed(const SamplerKernel& kernel) {
+    return kRaisesPower && kernel.k > kFloatPowerMaxK;
+  }
+
   using F = floats<Arch>;
   using I = ints<Arch>;
 
@@ -147,18 +162,29 @@ class PreparedSampler {
   SampleBatch<Arch> from_polar_angle(F u1, F u2) const requires(arch_of<Arch, xsimd::avx512f>) {
     const F theta = polar_angle(detail::unit_interval(u1));
     const auto [sin_theta, cos_theta] = detail::sin_cos_halfpi(theta);
-    // F = cos^k(c theta), cos(c theta) = 1 - 2 sin^2(c theta / 2), c theta in [0, pi/2].
-    const F sin_half = detail::sin_cos_quarter_pi(half_c_ * theta).hi;
-    const F lobe = kutlog::detail::integer_power(neg_mul_add(F(2.0f) * sin_half, sin_half, F(1.0f)),
-                                                 kernel_.k);
+    const F lobe = lobe_power(detail::sin_cos_quarter_pi(half_c_ * theta).hi);
     const F density = kernel_.cosine_weighted ? peak_ * lobe * cos_theta : peak_ * lobe;
     return finish(u1, u2, sin_theta, cos_theta, density);
+  }
+
+  // F = cos^k(c theta) = (1 - 2 s^2)^k, s = sin(c theta / 2), c theta in [0, pi/2]; in double
+  // lanes, rounded once, where kDoublePower.
+  F lobe_power(F sin_half) const requires(arch_of<Arch, xsimd::avx512f>) {
+    if constexpr (!kDoublePower)
+      return kutlog::detail::integer_power(neg_mul_add(F(2.0f) * sin_half, sin_half, F(1.0f)),
+                                           kernel_.k);
+    using D = doubles<Arch>;
+    const auto power = [this](D s) {
+      return kutlog::detail::integer_power(neg_mul_add(D(2.0) * s, s, D(1.0)), kernel_.k);
+    };
+    const Pair<D> halves = widen(sin_half);
+    return narrow(power(halves.hi), power(halves.lo));
   }
 #endif
 
   // The other archs: the cell's row of SamplerKernel::rows (the one-sample call's), the
-  // haversine q = sin^2(theta/2) and the pdf from its two cubics, then cos(theta) = 1 - 2 q and
-  // sin(theta) = 2 sqrt(q (1 - q)): no sine of theta and no power.
+  // haversine q = sin^2(theta/2) (over its scale) and the pdf from its two cubics, then
+  // cos(theta) = 1 - 2 q and sin(theta) = 2 sqrt(q (1 - q)): no sine of theta and no power.
   SampleBatch<Arch> from_rows(F u1, F u2) const {
     using K = SamplerKernel;
     constexpr SamplerCells kCells = K::kRowCells;
@@ -177,8 +203,10 @@ class PreparedSampler {
     };
     static_assert(K::kRowDegree == 3 && K::kRowStride == 8);
     const F weight = xsimd::min(u + u, F(1.0f));  // exactly 1 above 1/2
-    const F q = xsimd::min(xsimd::max(weight * cubic(0), F(0.0f)), F(kernel_.haversine_limit));
-    return finish(u1, u2, F(2.0f) * xsimd::sqrt(neg_mul_add(q, q, q)),
+    const F scaled = xsimd::min(xsimd::max(weight * cubic(0), F(0.0f)),
+                                F(kernel_.haversine_limit));
+    const F q = F(kernel_.haversine_scale) * scaled;
+    return finish(u1, u2, F(kernel_.sine_scale) * xsimd::sqrt(neg_mul_add(q, scaled, scaled)),
                   neg_mul_add(F(2.0f), q, F(1.0f)), cubic(4));
   }
 
@@ -349,9 +377,10 @@ inline SampledDirection sample(const SamplerKernel& kernel, float u1, float u2) 
   const float weight = std::bit_cast<float>(
       std::min(std::bit_cast<std::uint32_t>(u1 + u1), std::bit_cast<std::uint32_t>(1.0f)));
   // q = sin^2(theta/2): cos(theta) = 1 - 2 q, sin(theta) = 2 sqrt(q (1 - q)).
-  const float q = std::clamp(weight * fitted, 0.0f, kernel.haversine_limit);
+  const float scaled = std::clamp(weight * fitted, 0.0f, kernel.haversine_limit);
+  const float q = kernel.haversine_scale * scaled;
   const float cos_theta = mul_add<Arch>(-2.0f, q, 1.0f);
-  const float sin_theta = 2.0f * std::sqrt(mul_add<Arch>(-q, q, q));
+  const float sin_theta = kernel.sine_scale * std::sqrt(mul_add<Arch>(-q, scaled, scaled));
   const SinCos azimuth = sin_cos_turn<Arch>(unit_interval(u2));
   return {sin_theta * azimuth.cos, sin_theta * azimuth.sin, cos_theta,
           std::clamp(pdf, 0.0f, kernel.density_scale)};
