@@ -94,13 +94,18 @@ struct Fit {
   }
 };
 
-// The stored polynomial of the cell holding the argument, in double, times its weight.
+// Cell `cell`'s stored polynomial at x, in double.
+double stored_polynomial(Storage storage, int cell, int degree, double x) {
+  double p = *storage.at(cell, degree);
+  for (int j = degree; j-- > 0;) p = p * x + *storage.at(cell, j);
+  return p;
+}
+
+// The stored polynomial of the cell holding the argument, times its weight.
 double stored_value(SamplerCells layout, Weight weight, int degree, Storage storage, bool lower,
                     double argument) {
   const auto [cell, x] = layout.position(lower, argument);
-  double p = *storage.at(cell, degree);
-  for (int j = degree; j-- > 0;) p = p * x + *storage.at(cell, j);
-  return weight_at(weight, lower, argument) * p;
+  return weight_at(weight, lower, argument) * stored_polynomial(storage, cell, degree, x);
 }
 
 // Fits value_at in every cell of `layout` with one degree, the lowest (up to max_degree) whose
@@ -138,8 +143,7 @@ Fit fit_cells(const ValueAt& value_at, double scale, Weight weight, SamplerCells
       *storage.at(cell.index, j) = j <= fit.degree ? float(monomials[j]) : 0.0f;
     for (int m = 0; m < kCheckPoints; ++m) {
       const double x = (m + 0.5) / kCheckPoints - 0.5;
-      double p = *storage.at(cell.index, fit.degree);
-      for (int j = fit.degree; j-- > 0;) p = p * x + *storage.at(cell.index, j);
+      const double p = stored_polynomial(storage, cell.index, fit.degree, x);
       fit.error =
           std::max(fit.error, std::fabs(weight_of(cell, x) * p - value_of(cell, x)) / scale);
     }

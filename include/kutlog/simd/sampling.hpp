@@ -67,6 +67,26 @@ inline Pair<floats<Arch>> sin_cos_turn(floats<Arch> u) {
   return {xsimd::select(odd, cos_r, sin_r) ^ sin_sign, xsimd::select(odd, sin_r, cos_r) ^ cos_sign};
 }
 
+// The band cell of w in [2^-24, 1) in the layout `cells` (kutlog/sampling.hpp's SamplerCells)
+// from its bits: the exponent and the top band_bits give the cell, the other mantissa bits,
+// as a float in [1, 2), 1.5 + x.
+template <class Arch>
+struct BandPosition {
+  ints<Arch> cell;
+  floats<Arch> x;
+};
+template <SamplerCells cells, class Arch>
+inline BandPosition<Arch> band_position(floats<Arch> w) {
+  using F = floats<Arch>;
+  using I = ints<Arch>;
+  constexpr int kFractionBits = 23 - cells.band_bits;
+  const I bits = xsimd::bitwise_cast<I>(w);
+  const I s = bits >> kFractionBits;
+  const I fraction = (bits & I((1 << kFractionBits) - 1)) << cells.band_bits;
+  return {I(cells.upper_cell_offset()) - s + ((s & I(cells.bands() - 1)) << 1),
+          xsimd::bitwise_cast<F>(fraction | I(0x3f800000)) - F(1.5f)};
+}
+
 // The cell of u1 in [0, 1) in the layout `cells` (kutlog/sampling.hpp's SamplerCells), and
 // u1's position x in it.
 template <class Arch>
@@ -78,21 +98,14 @@ struct CellPosition {
 template <SamplerCells cells, class Arch>
 inline CellPosition<Arch> locate(floats<Arch> u1) {
   using F = floats<Arch>;
-  using I = ints<Arch>;
   const auto lower = u1 <= F(0.5f);
   // Lower cells: 2 L u1 = cell + 1/2 + x exactly.
   const F scaled = u1 * F(2 * cells.lower_cells);
   const F lower_cell = xsimd::min(xsimd::floor(scaled), F(cells.lower_cells - 1));
-  // Upper cells by the bits of w = 1 - u1 (exact): exponent and top band_bits give the cell,
-  // the other mantissa bits, as a float in [1, 2), 1.5 + x.
-  constexpr int kFractionBits = 23 - cells.band_bits;
-  const I bits = xsimd::bitwise_cast<I>(F(1.0f) - u1);
-  const I s = bits >> kFractionBits;
-  const I upper_cell = I(cells.upper_cell_offset()) - s + ((s & I(cells.bands() - 1)) << 1);
-  const I fraction = (bits & I((1 << kFractionBits) - 1)) << cells.band_bits;
-  const F upper_x = xsimd::bitwise_cast<F>(fraction | I(0x3f800000)) - F(1.5f);
-  return {xsimd::select(xsimd::bool_cast(lower), xsimd::to_int(lower_cell), upper_cell),
-          xsimd::select(lower, (scaled - lower_cell) - F(0.5f), upper_x), lower};
+  // Upper cells by the bits of w = 1 - u1 (exact).
+  const BandPosition<Arch> upper = band_position<cells>(F(1.0f) - u1);
+  return {xsimd::select(xsimd::bool_cast(lower), xsimd::to_int(lower_cell), upper.cell),
+          xsimd::select(lower, (scaled - lower_cell) - F(0.5f), upper.x), lower};
 }
 
 // Horner's rule over coefficient rows (row j at coefficients + j * stride), each lane's
@@ -170,15 +183,17 @@ class PreparedSampler {
   // F = cos^k(c theta) = (1 - 2 s^2)^k, s = sin(c theta / 2), c theta in [0, pi/2]; in double
   // lanes, rounded once, where kDoublePower.
   F lobe_power(F sin_half) const requires(arch_of<Arch, xsimd::avx512f>) {
-    if constexpr (!kDoublePower)
+    if constexpr (!kDoublePower) {
       return kutlog::detail::integer_power(neg_mul_add(F(2.0f) * sin_half, sin_half, F(1.0f)),
                                            kernel_.k);
-    using D = doubles<Arch>;
-    const auto power = [this](D s) {
-      return kutlog::detail::integer_power(neg_mul_add(D(2.0) * s, s, D(1.0)), kernel_.k);
-    };
-    const Pair<D> halves = widen(sin_half);
-    return narrow(power(halves.hi), power(halves.lo));
+    } else {
+      using D = doubles<Arch>;
+      const auto power = [this](D s) {
+        return kutlog::detail::integer_power(neg_mul_add(D(2.0) * s, s, D(1.0)), kernel_.k);
+      };
+      const Pair<D> halves = widen(sin_half);
+      return narrow(power(halves.hi), power(halves.lo));
+    }
   }
 #endif
 
@@ -187,14 +202,11 @@ class PreparedSampler {
   // cos(theta) = 1 - 2 q and sin(theta) = 2 sqrt(q (1 - q)): no sine of theta and no power.
   SampleBatch<Arch> from_rows(F u1, F u2) const {
     using K = SamplerKernel;
-    constexpr SamplerCells kCells = K::kRowCells;
-    constexpr int kFractionBits = 23 - kCells.band_bits;
+    static_assert(K::kRowCells.lower_cells == 0 && K::kRowCells.top_exponent == -1);
     const F u = detail::unit_interval(u1);
-    const I bits = xsimd::bitwise_cast<I>(xsimd::min(F(1.0f) - u, F(detail::kLargestBelowOne)));
-    const I s = bits >> kFractionBits;
-    const I cell = I(kCells.upper_cell_offset()) - s + ((s & I(kCells.bands() - 1)) << 1);
-    const F x = xsimd::bitwise_cast<F>(((bits & I((1 << kFractionBits) - 1)) << kCells.band_bits) |
-                                       I(0x3f800000)) - F(1.5f);
+    // w = 1 - u rounded below 1/2 (x moves by at most 2^-21); u = 0 gives the last cell's edge.
+    const auto [cell, x] = detail::band_position<K::kRowCells>(
+        xsimd::min(F(1.0f) - u, F(detail::kLargestBelowOne)));
     const std::array<F, K::kRowStride> c = row_coefficients(cell);
     const F square = x * x;
     const auto cubic = [&](std::size_t first) {
