@@ -205,9 +205,10 @@ class PreparedSampler {
     static_assert(K::kRowCells.lower_cells == 0 && K::kRowCells.top_exponent == -1);
     const F u = detail::unit_interval(u1);
     // w = 1 - u rounded below 1/2 (x moves by at most 2^-21); u = 0 gives the last cell's edge.
-    const auto [cell, x] = detail::band_position<K::kRowCells>(
+    const detail::BandPosition<Arch> at = detail::band_position<K::kRowCells>(
         xsimd::min(F(1.0f) - u, F(detail::kLargestBelowOne)));
-    const std::array<F, K::kRowStride> c = row_coefficients(cell);
+    const F x = at.x;
+    const std::array<F, K::kRowStride> c = row_coefficients(at.cell);
     const F square = x * x;
     const auto cubic = [&](std::size_t first) {
       return mul_add(square, mul_add(c[first + 3], x, c[first + 2]),
