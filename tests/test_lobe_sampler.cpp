@@ -34,6 +34,12 @@
 //   the haversine unscaled (scale 1): NarrowestLobesWithinBounds on avx2 and sse4.1 and
 //     OnePerCallNarrowestLobesWithinBounds on every arch (theta up to 1.7e-4 G, from float
 //     subnormals);
+// and in the batches' bit-level steps (2026-12-04, second session):
+//   NaN not ORed into z (the unordered compare's lanes): DataRuleAndTails on avx2 and sse4.1;
+//   cos's sign not flipped in odd quadrants: GridWithinBounds and RandomLobesWithinBounds on
+//     every arch (phi), no chi-square (a reflection within the quadrant keeps it uniform);
+//   the rows' cell not clamped: DataRuleAndTails on aarch64 (qemu), a segmentation fault on
+//     the NaN u1 (NEON's max keeps NaN; x86's gives 0, so no x86 test can see it);
 // and in AVX-512's batches (2026-12-04):
 //   the lobe's power in float for every k: RandomLobesWithinBounds and
 //     NarrowestLobesWithinBounds on avx512 (pdf up to 2.3e-6 of the peak at k = 48; the

@@ -59,12 +59,14 @@ inline Pair<floats<Arch>> sin_cos_turn(floats<Arch> u) {
       sin_cos_quarter_pi((four_u - (rounded - F(kRounder))) * F(constants::kHalfPiHi));
   // Quadrant q: (sin, cos) = (s, c), (c, -s), (-s, -c), (-c, s): swapped where q is odd, sin
   // negated where bit 1 of q is set, cos where bit 1 of q + 1 is (bit 1 moved to the sign).
-  const I q = xsimd::bitwise_cast<I>(rounded);
-  const auto odd = xsimd::bool_cast((q & I(1)) != I(0));
-  const F sin_sign = xsimd::bitwise_cast<F>((q << 30) & I(std::numeric_limits<int>::min()));
-  const F cos_sign =
-      xsimd::bitwise_cast<F>(((q + I(1)) << 30) & I(std::numeric_limits<int>::min()));
-  return {xsimd::select(odd, cos_r, sin_r) ^ sin_sign, xsimd::select(odd, sin_r, cos_r) ^ cos_sign};
+  const I q = xsimd::bitwise_cast<I>(rounded), odd = q << 31;
+  const I sin_sign = (q << 30) & I(std::numeric_limits<int>::min());
+  const I cos_sign = sin_sign ^ odd;  // bit 1 of q + 1 is bit 1 of q flipped where q is odd
+  // The swap where q is odd, by bits: x ^ ((sin ^ cos) & mask) is the other where mask is all
+  // ones (GCC makes two blends five instructions).
+  const F swap = (sin_r ^ cos_r) & xsimd::bitwise_cast<F>(odd >> 31);
+  return {sin_r ^ (swap ^ xsimd::bitwise_cast<F>(sin_sign)),
+          cos_r ^ (swap ^ xsimd::bitwise_cast<F>(cos_sign))};
 }
 
 // The band cell of w in [2^-24, 1) in the layout `cells` (kutlog/sampling.hpp's SamplerCells)
@@ -122,11 +124,34 @@ inline floats<Arch> cell_polynomial(const float* coefficients, int degree, int s
   return p;
 }
 
-// u in [0, 1): below 0 (and NaN) to 0, from 1 up to the largest float below 1.
+// u in [0, 1): below 0 to 0, from 1 up to the largest float below 1. NaN gives 0 on x86 and
+// NaN elsewhere: the callers NaN its outputs (nan_where_unordered) and index nothing by it.
 template <class Arch>
 inline floats<Arch> unit_interval(floats<Arch> u) {
   using F = floats<Arch>;
-  return xsimd::select(u > F(0.0f), xsimd::min(u, F(kLargestBelowOne)), F(0.0f));
+  return xsimd::min(xsimd::max(u, F(0.0f)), F(kLargestBelowOne));
+}
+
+// The sample, NaN in every output where u1 or u2 is NaN. With SSE and AVX, an OR with the
+// all-ones lanes (a NaN) of one unordered compare: GCC makes each select there a compare and
+// an AND or a three-uop blend.
+template <class Arch>
+inline SampleBatch<Arch> nan_where_unordered(floats<Arch> u1, floats<Arch> u2,
+                                             SampleBatch<Arch> s) {
+  using F = floats<Arch>;
+  [[maybe_unused]] const auto or_lanes = [&s](F nan_lanes) -> SampleBatch<Arch> {
+    return {s.x | nan_lanes, s.y | nan_lanes, s.z | nan_lanes, s.pdf | nan_lanes};
+  };
+#if XSIMD_WITH_AVX
+  if constexpr (arch_of<Arch, xsimd::avx>) return or_lanes(_mm256_cmp_ps(u1, u2, _CMP_UNORD_Q));
+#endif
+#if XSIMD_WITH_SSE2
+  if constexpr (arch_of<Arch, xsimd::sse2>) return or_lanes(_mm_cmpunord_ps(u1, u2));
+#endif
+  const auto valid = (u1 == u1) & (u2 == u2);
+  const F nan(std::numeric_limits<float>::quiet_NaN());
+  return {xsimd::select(valid, s.x, nan), xsimd::select(valid, s.y, nan),
+          xsimd::select(valid, s.z, nan), xsimd::select(valid, s.pdf, nan)};
 }
 }  // namespace detail
 
@@ -208,7 +233,11 @@ class PreparedSampler {
     const detail::BandPosition<Arch> at = detail::band_position<K::kRowCells>(
         xsimd::min(F(1.0f) - u, F(detail::kLargestBelowOne)));
     const F x = at.x;
-    const std::array<F, K::kRowStride> c = row_coefficients(at.cell);
+    // A NaN u1 leaves any bits in w (not on x86): its cell, clamped as unsigned, reads a row.
+    using U = xsimd::batch<std::uint32_t, Arch>;
+    const U last_cell(std::uint32_t(K::kRowCells.count() - 1));
+    const std::array<F, K::kRowStride> c = row_coefficients(
+        xsimd::bitwise_cast<I>(xsimd::min(xsimd::bitwise_cast<U>(at.cell), last_cell)));
     const F square = x * x;
     const auto cubic = [&](std::size_t first) {
       return mul_add(square, mul_add(c[first + 3], x, c[first + 2]),
@@ -235,11 +264,10 @@ class PreparedSampler {
   // [0, peak]; NaN in every output where u1 or u2 is NaN.
   SampleBatch<Arch> finish(F u1, F u2, F sin_theta, F cos_theta, F density) const {
     const auto [sin_phi, cos_phi] = detail::sin_cos_turn(detail::unit_interval(u2));
-    const auto valid = (u1 == u1) & (u2 == u2);
-    const F nan(std::numeric_limits<float>::quiet_NaN());
-    return {xsimd::select(valid, sin_theta * cos_phi, nan),
-            xsimd::select(valid, sin_theta * sin_phi, nan), xsimd::select(valid, cos_theta, nan),
-            xsimd::select(valid, detail::clamp_zero_to(density, peak_), nan)};
+    return detail::nan_where_unordered(
+        u1, u2,
+        {sin_theta * cos_phi, sin_theta * sin_phi, cos_theta,
+         detail::clamp_zero_to(density, peak_)});
   }
 
   // Each lane's row of SamplerKernel::rows, transposed: coefficient j of every lane in batch
@@ -250,6 +278,11 @@ class PreparedSampler {
     // Byte offsets, unsigned: each lane's address is then one add, with no sign extension.
     alignas(64) std::uint32_t offsets[N];
     (cell * I(kRowBytes)).store_aligned(reinterpret_cast<std::int32_t*>(offsets));
+#if defined(__GNUC__)
+    // Read back from memory: GCC would extract each lane instead (vpextrd, two uops each), 10%
+    // slower over the whole AVX2 batch than one store and a load per lane.
+    asm volatile("" : "+m"(offsets));
+#endif
     const auto row = [&](std::size_t lane) {
       return reinterpret_cast<const float*>(
           reinterpret_cast<const char*>(kernel_.rows.data()) + offsets[lane]);
