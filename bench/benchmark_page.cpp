@@ -55,7 +55,7 @@ std::string_view explanation(RatioKind kind) {
     case RatioKind::fragment:
       return "## One fragment per call\n\n"
              "The scalar `lobe.eval(t)` called once per fragment in a loop, against `powf(t, n)`\n"
-             "and `std::pow` in double, n = 1000, t uniform in angle over twice the lobe's\n"
+             "and `std::pow` in double, n = 50 and 1000, t uniform in angle over twice the lobe's\n"
              "support: half the calls fall past the cut-off, where `eval(t)` returns 0 after one\n"
              "branch. Over 4096 inputs run again and again, the branch predictor learns part of\n"
              "which do; over 262144 it cannot, which is the scalar path's worst case (a\n"

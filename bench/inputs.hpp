@@ -23,6 +23,8 @@ struct FragmentDataSet {
   std::size_t count;
   const char* order;
 };
+// The fragment benchmarks' exponents: a broad lobe and a narrow one.
+inline constexpr int kFragmentExponents[] = {50, 1000};
 inline constexpr FragmentDataSet kFragmentDataSets[] = {
     {kArrayLength, ""}, {kFragmentInputsUnlearned, ""}, {kArrayLength, "/inside"},
     {kArrayLength, "/raster"}};

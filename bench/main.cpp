@@ -81,28 +81,33 @@ void register_scalar_benchmarks() {
   add("math/exp/std/arch:scalar", [](float x) { return std::exp(x); }, uniform_inputs(-80, 80));
   add("math/log/std/arch:scalar", [](float x) { return std::log(x); }, uniform_inputs(1e-3f, 1e3f));
   add("math/pow/std/arch:scalar", [](float x) { return std::pow(x, 1000.0f); }, uniform_inputs(0, 1));
-  // One fragment at a time, as a fragment shader calls it: t = N.H over the lobe, n = 1000,
-  // half of it past the cut-off. Over the 4096 inputs run again and again, the CPU's branch
+  // One fragment at a time, as a fragment shader calls it: t = N.H over the lobe (n = 50 and
+  // 1000), half of it past the cut-off. Over the 4096 inputs run again and again, the CPU's branch
   // predictor learns part of which fall past it; over kFragmentInputsUnlearned
   // (/inputs:<count>), in no order it can learn, each costs what a path tracer's random
   // directions would. /inside: every t inside the lobe, where a path tracer evaluates the
   // direction it sampled; /raster: a rasterizer's order, t rising and falling along scanlines
   // across the highlight.
-  for (const auto& [count, order] : kFragmentDataSets)
-    for (int k : {3, 5}) {
-      const auto lobe = std::make_shared<const Lobe>(1000, k, kLobeAnchor);
-      const std::string at =
-          "/n:1000/k:" + std::to_string(k) + fragment_inputs_token(count) + order;
-      const std::vector<float> cosines = fragment_inputs(*lobe, count, order);
-      add(("fragment/scalar_kutlog" + at).c_str(),
-          [lobe](float t) { return lobe->eval(t); }, cosines);
-      add(("fragment/scalar_kutlog_fast" + at).c_str(),
-          [lobe](float t) { return lobe->eval(t, Variant::fast); }, cosines);
-      add(("fragment/scalar_powf" + at).c_str(),
-          [](float t) { return powf(std::max(t, 0.0f), 1000.0f); }, cosines);
-      add(("fragment/scalar_pow_double" + at).c_str(),
-          [](float t) { return float(std::pow(double(std::max(t, 0.0f)), 1000.0)); }, cosines);
-    }
+  for (int n : kFragmentExponents)
+    for (const auto& [count, order] : kFragmentDataSets)
+      for (int k : {3, 5}) {
+        const auto lobe = std::make_shared<const Lobe>(n, k, kLobeAnchor);
+        const std::string at = "/n:" + std::to_string(n) + "/k:" + std::to_string(k) +
+                               fragment_inputs_token(count) + order;
+        const std::vector<float> cosines = fragment_inputs(*lobe, count, order);
+        add(("fragment/scalar_kutlog" + at).c_str(),
+            [lobe](float t) { return lobe->eval(t); }, cosines);
+        add(("fragment/scalar_kutlog_fast" + at).c_str(),
+            [lobe](float t) { return lobe->eval(t, Variant::fast); }, cosines);
+        add(("fragment/scalar_powf" + at).c_str(),
+            [exponent = float(n)](float t) { return powf(std::max(t, 0.0f), exponent); },
+            cosines);
+        add(("fragment/scalar_pow_double" + at).c_str(),
+            [exponent = double(n)](float t) {
+              return float(std::pow(double(std::max(t, 0.0f)), exponent));
+            },
+            cosines);
+      }
   // One half vector per call, as a path tracer draws them: LobeSampler::sample(u1, u2), and
   // pbrt-v2's Blinn-Phong draw (bench/sampling_benchmarks.hpp); over 4096 pairs, and over 2^18
   // whose order no branch predictor learns, as a path tracer's fresh random numbers.

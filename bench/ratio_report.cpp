@@ -130,23 +130,29 @@ std::optional<tools::Table> RatioCollector::lobe_ratios() const {
 
 std::optional<tools::Table> RatioCollector::fragment_ratios() const {
   // Per fragment: ns per call of each fragment function, and its speed over each peer's.
-  tools::Table table({"per fragment, n = 1000", "inputs", "k", "ns/call", "powf / it",
+  tools::Table table({"per fragment", "n", "inputs", "k", "ns/call", "powf / it",
                       "pow(double) / it"});
   bool any = false;
-  for (const auto& [count, order] : kFragmentDataSets)
-    for (int k : {3, 5}) {
-      const std::string at =
-          "/n:1000/k:" + std::to_string(k) + fragment_inputs_token(count) + order;
-      const std::string inputs = std::to_string(count) + (*order ? std::string(" ") + (order + 1) : "");
-      const double kutlog = rate("fragment/scalar_kutlog" + at), fast = rate("fragment/scalar_kutlog_fast" + at);
-      const double powf = rate("fragment/scalar_powf" + at), pow_double = rate("fragment/scalar_pow_double" + at);
-      if (kutlog == 0 || powf == 0 || pow_double == 0) continue;
-      any = true;
-      for (auto [name, rate_of] : {std::pair{"scalar_kutlog", kutlog}, std::pair{"scalar_kutlog_fast", fast},
-                                   std::pair{"scalar_powf", powf}, std::pair{"scalar_pow_double", pow_double}})
-        table.add_row({name, inputs, std::to_string(k), fmt::format("{:.2f}", 1e9 / rate_of),
-                       times(rate_of / powf), times(rate_of / pow_double)});
-    }
+  for (int n : kFragmentExponents)
+    for (const auto& [count, order] : kFragmentDataSets)
+      for (int k : {3, 5}) {
+        const std::string at = "/n:" + std::to_string(n) + "/k:" + std::to_string(k) +
+                               fragment_inputs_token(count) + order;
+        const std::string inputs =
+            std::to_string(count) + (*order ? std::string(" ") + (order + 1) : "");
+        const double kutlog = rate("fragment/scalar_kutlog" + at),
+                     fast = rate("fragment/scalar_kutlog_fast" + at);
+        const double powf = rate("fragment/scalar_powf" + at),
+                     pow_double = rate("fragment/scalar_pow_double" + at);
+        if (kutlog == 0 || powf == 0 || pow_double == 0) continue;
+        any = true;
+        for (auto [name, rate_of] :
+             {std::pair{"scalar_kutlog", kutlog}, std::pair{"scalar_kutlog_fast", fast},
+              std::pair{"scalar_powf", powf}, std::pair{"scalar_pow_double", pow_double}})
+          table.add_row({name, std::to_string(n), inputs, std::to_string(k),
+                         fmt::format("{:.2f}", 1e9 / rate_of), times(rate_of / powf),
+                         times(rate_of / pow_double)});
+      }
   return any ? std::optional(std::move(table)) : std::nullopt;
 }
 
