@@ -42,7 +42,7 @@ struct LobeKernel {
   [[gnu::always_inline]] double unrounded(float t) const noexcept {
     const double t_capped = t < 1.0f ? double(t) : 1.0, w = 1.0 - t_capped;  // NaN kept
     if (form == Form::base_power)
-      return with_q(w, [&](double q) { return scale_d * base_power(1.0 - w * q); });
+      return with_q(w, [&](double q) { return scale_d * detail::integer_power(1.0 - w * q, k); });
     return with_q(double(center_t) - t_capped, [&](double q) { return scale_d - w * q; });
   }
   // A branch, not a select: past the cut the polynomial's values would cost one every call.
@@ -92,17 +92,6 @@ struct LobeKernel {
       double power = x;
       for (int m = 1; m < kLow; m *= 2) power *= power;
       return estrin<kFirst, kLow>(x) + power * estrin<kFirst + kLow, kCount - kLow>(x);
-    }
-  }
-  [[gnu::always_inline]] double base_power(double base) const {
-    const double square = base * base;
-    switch (k) {
-      case 1: return base;
-      case 2: return square;
-      case 3: return square * base;
-      case 4: return square * square;
-      case 5: return square * square * base;
-      default: return detail::integer_power(base, k);
     }
   }
 };

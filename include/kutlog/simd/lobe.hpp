@@ -143,7 +143,7 @@ class PreparedPerLaneLobe {
       r_[i] = F(kernel.r[i]);
   }
 
-  F operator()(F t, F n) const {
+  [[gnu::always_inline]] F operator()(F t, F n) const {
     // max(n_min, n) and min(n_max, .) in this order keep NaN.
     const F n_clamped = xsimd::min(F(kernel_.n_max), xsimd::max(F(kernel_.n_min), n));
     F y = xsimd::reciprocal(n_clamped);  // 12 or 14 bits, refined by one Newton step
@@ -162,7 +162,7 @@ class PreparedPerLaneLobe {
 
  private:
   // (1 - v r)^k in double lanes, rounded once: in float the base's rounding grows k-fold.
-  F power_in_double(F v, F r) const {
+  [[gnu::always_inline]] F power_in_double(F v, F r) const {
     using D = doubles<Arch>;
     const Pair<D> v_halves = widen(v), r_halves = widen(r);
     const auto half = [this](D v_half, D r_half) {
@@ -172,11 +172,21 @@ class PreparedPerLaneLobe {
   }
 
   using Batches = std::array<F, PerLaneKernel::kMaxDegree + 1>;
-  static F horner(F x, const Batches& coefficients, int degree) {
-    std::size_t i = std::size_t(degree);
-    F result = coefficients[i];
-    while (i-- > 0) result = mul_add(result, x, coefficients[i]);
-    return result;
+  // Horner's rule from c[degree] down, entered at the degree's step: one jump a batch where a
+  // loop of degree steps measured 6% slower.
+  [[gnu::always_inline]] static F horner(F x, const Batches& c, int degree) {
+    static_assert(PerLaneKernel::kMaxDegree == 20, "one step per degree below");
+    F r = c[std::size_t(degree)];
+    switch (degree) {
+#define KUTLOG_STEP(d) case d: r = mul_add(r, x, c[d - 1]); [[fallthrough]];
+      KUTLOG_STEP(20) KUTLOG_STEP(19) KUTLOG_STEP(18) KUTLOG_STEP(17) KUTLOG_STEP(16)
+      KUTLOG_STEP(15) KUTLOG_STEP(14) KUTLOG_STEP(13) KUTLOG_STEP(12) KUTLOG_STEP(11)
+      KUTLOG_STEP(10) KUTLOG_STEP(9) KUTLOG_STEP(8) KUTLOG_STEP(7) KUTLOG_STEP(6)
+      KUTLOG_STEP(5) KUTLOG_STEP(4) KUTLOG_STEP(3) KUTLOG_STEP(2) KUTLOG_STEP(1)
+#undef KUTLOG_STEP
+      default: break;
+    }
+    return r;
   }
 
   const PerLaneKernel& kernel_;
