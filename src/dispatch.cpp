@@ -209,9 +209,11 @@ void reset_arch() {
   detail::active_lobe_loops.store(nullptr, std::memory_order_relaxed);
 }
 
-const detail::LobeArrayKernels* detail::fused_lobe_array_kernels() {
+const detail::LobeArrayKernels* detail::lobe_array_kernels_for(Arithmetic arithmetic) {
+  if (arithmetic == Arithmetic::scalar) return nullptr;
   for (Arch arch : kCompiledArchs)
-    if (arch_supported(arch) && table_of(arch).fused_fma) return &table_of(arch);
+    if (arch_supported(arch) && table_of(arch).fused_fma == (arithmetic == Arithmetic::fused))
+      return &table_of(arch);
   return nullptr;
 }
 

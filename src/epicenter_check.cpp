@@ -18,10 +18,10 @@ constexpr int kChains = 8;
 
 }  // namespace
 
-std::optional<double> measured_epicenter_ulp(const LobeKernel& kernel,
+std::optional<double> measured_epicenter_ulp(const LobeKernel& kernel, Arithmetic arithmetic,
                                              const QuotientFit& reference, double scale,
                                              double w_epicenter) {
-  const LobeArrayKernels* kernels = fused_lobe_array_kernels();
+  const LobeArrayKernels* kernels = lobe_array_kernels_for(arithmetic);
   if (!kernels || kernel.form != LobeKernel::Form::polynomial) return std::nullopt;
   // Every float t of [1 - w_epicenter, 1], 1 first (t above 1 gives t = 1's output).
   const float t_lowest = float(1 - w_epicenter);

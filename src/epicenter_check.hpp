@@ -3,11 +3,12 @@
 // every rounding at its worst, cannot prove it, run the kernel itself on every float t of the
 // epicenter and compare each output with a reference whose own error is bounded.
 //
-// Only FMA kernels are checked this way: their arithmetic is fused multiply-adds, subtractions
-// and clamps that no compiler flag can contract or reorder, so every FMA arch (AVX2, AVX-512,
-// NEON) computes the same bits as the arch the check ran on. (An unfused kernel's products
-// may be fused by the caller's flags when kutlog/simd/lobe.hpp is inlined; the certified
-// bound covers both, a run covers one.)
+// The kernel is run where it will run: an FMA kernel on this CPU's best FMA arch, an unfused
+// one on its best arch without (SSE4.1, or the portable arch). Each computes the bits every
+// arch of its kind computes: fused multiply-adds, or products and sums rounded one at a time,
+// in the same order, subtractions and clamps; kutlog compiles its kernels with
+// -ffp-contract=off. (A caller who inlines kutlog/simd/lobe.hpp and lets the compiler fuse an
+// unfused kernel's products runs other bits: docs/api-notes.md, KernelCertificate.)
 #pragma once
 
 #include <optional>
@@ -21,17 +22,19 @@ namespace kutlog::detail {
 // cost more than the setup's budget, and the certified forms serve them.
 inline constexpr long kMaxCheckedEpicenterFloats = 1L << 14;
 
-// The largest error of a fused polynomial kernel over every float t in [1 - w_epicenter, 1],
-// in ulps of the exact scale F, against scale (1 - w p(s)) with p the reference fit (a fit of
-// the same q, to a degree where its truncation is below 2^-40 of the peak), the reference's
-// own error bound added to each float's. nullopt when this CPU has no FMA arch or the
-// epicenter has more than kMaxCheckedEpicenterFloats floats.
-std::optional<double> measured_epicenter_ulp(const LobeKernel& kernel,
+// The largest error of a polynomial kernel for SIMD lanes of that arithmetic (fused or
+// unfused) over every float t in [1 - w_epicenter, 1], in ulps of the exact scale F, against
+// scale (1 - w p(s)) with p the reference fit (a fit of the same q, to a degree where its
+// truncation is below 2^-40 of the peak), the reference's own error bound added to each
+// float's. nullopt when this CPU has no arch of that arithmetic or the epicenter has more
+// than kMaxCheckedEpicenterFloats floats.
+std::optional<double> measured_epicenter_ulp(const LobeKernel& kernel, Arithmetic arithmetic,
                                              const QuotientFit& reference, double scale,
                                              double w_epicenter);
 
-// The kernels of this CPU's best FMA arch (src/dispatch.cpp), or nullptr if it has none.
+// The kernels of this CPU's best arch with (fused) or without (unfused) FMA
+// (src/dispatch.cpp), or nullptr if it has none; nullptr for the scalar path.
 struct LobeArrayKernels;
-const LobeArrayKernels* fused_lobe_array_kernels();
+const LobeArrayKernels* lobe_array_kernels_for(Arithmetic arithmetic);
 
 }  // namespace kutlog::detail

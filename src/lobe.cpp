@@ -102,9 +102,9 @@ class QuotientSeries {
 // Multiplications of B^k by squaring (k = 5: B^2, B^4, B^4 B).
 int power_cost(int k) { return std::bit_width(unsigned(k)) + std::popcount(unsigned(k)) - 2; }
 
-// Whether a kernel meets the target: by its certified bound or, for a fused kernel (one
-// whose bound met the absolute promise and missed the epicenter's by at most twice), by
-// running it on every float of the epicenter (src/epicenter_check.hpp). If it does, its
+// Whether a kernel meets the target: by its certified bound or, for a SIMD kernel (one whose
+// bound met the absolute promise and missed the epicenter's by at most twice), by running it
+// on every float of the epicenter (src/epicenter_check.hpp). If it does, its
 // certified bound.
 std::optional<detail::CertifiedError> meets(const LobeKernel& kernel, Arithmetic arithmetic,
                                             const detail::QuotientFit& fit, double scale,
@@ -119,7 +119,7 @@ std::optional<detail::CertifiedError> meets(const LobeKernel& kernel, Arithmetic
   const std::optional<detail::QuotientFit> reference = series_to_run->reference_fit();
   if (!reference) return std::nullopt;
   const std::optional<double> measured =
-      detail::measured_epicenter_ulp(kernel, *reference, scale, profile.w_epicenter);
+      detail::measured_epicenter_ulp(kernel, arithmetic, *reference, scale, profile.w_epicenter);
   if (measured && *measured <= target.epicenter_ulp) return certified;
   return std::nullopt;
 }
@@ -154,8 +154,8 @@ void drop_clamp_if_proven(LobeKernel& kernel, detail::CertifiedError& certified,
 // (center_t ~ cos(gran)): near the cut-off, where scale - w q cancels, s p(s) vanishes and
 // only q's constant term is rounded; near t = 1 the errors of q are multiplied by w, small
 // there. The lowest degree that meets the target, if one does: first in the plain form (one
-// multiply-add per degree), its bound certified or, with FMA, its epicenter run; else, with
-// FMA, in the compensated form, about ten operations more.
+// multiply-add per degree), its bound certified or its epicenter run; else, with FMA, in the
+// compensated form, about ten operations more.
 // A kernel with the bound its setup certified.
 struct CertifiedKernel {
   LobeKernel kernel;
@@ -182,11 +182,11 @@ std::optional<CertifiedKernel> fit_polynomial(LobeKernel kernel, QuotientSeries&
       }
       // The scale whole, else split (scale_f + (scale_lo - w q): one more rounding, of a term
       // smaller than the output, against scale_f's whole rounding error in a lower binade).
-      // FMA kernels of either may be run over the epicenter: the whole scale saves an add
+      // SIMD kernels of either may be run over the epicenter: the whole scale saves an add
       // per batch, worth a second run.
       const bool split = arithmetic != Arithmetic::scalar && (compensated || scale_lo != 0);
       QuotientSeries* series_to_run =
-          !compensated && arithmetic == Arithmetic::fused ? &series : nullptr;
+          !compensated && arithmetic != Arithmetic::scalar ? &series : nullptr;
       kernel.scale_lo = 0;
       std::optional<detail::CertifiedError> certified;
       if (!compensated)
