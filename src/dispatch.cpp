@@ -209,6 +209,12 @@ void reset_arch() {
   detail::active_lobe_loops.store(nullptr, std::memory_order_relaxed);
 }
 
+const detail::KernelTable& detail::best_kernel_table() {
+  for (Arch arch : kCompiledArchs)
+    if (arch_supported(arch)) return table_of(arch);
+  return table_of(active_arch());  // throws: this CPU runs no compiled arch
+}
+
 const detail::LobeArrayKernels* detail::lobe_array_kernels_for(Arithmetic arithmetic) {
   if (arithmetic == Arithmetic::scalar) return nullptr;
   for (Arch arch : kCompiledArchs)

@@ -12,9 +12,8 @@ namespace kutlog::detail {
 namespace {
 
 constexpr double kDoubleUnit = 0x1p-53;
-// The reference is evaluated eight floats at a time, so that the compiler keeps eight
-// independent Horner chains in flight (one chain alone waits on each multiply-add).
-constexpr int kChains = 8;
+// Floats a chunk: t and the kernel's outputs, 32 KiB.
+constexpr long kChunk = 4096;
 
 }  // namespace
 
@@ -28,10 +27,6 @@ std::optional<double> measured_epicenter_ulp(const LobeKernel& kernel, Arithmeti
   const long count = long(std::bit_cast<std::uint32_t>(1.0f)) -
                      long(std::bit_cast<std::uint32_t>(t_lowest)) + 1;
   if (count > kMaxCheckedEpicenterFloats) return std::nullopt;
-  std::vector<float> t(count), out(count);
-  for (long i = 0; i < count; ++i)
-    t[i] = std::bit_cast<float>(std::bit_cast<std::uint32_t>(1.0f) - std::uint32_t(i));
-  kernels->of(kernel)(kernel, t.data(), out.data(), std::size_t(count));
 
   // scale (1 - w p(s)) in double: s = center_t - t and w = 1 - t are exact (floats of one
   // binade or two), the coefficients off by half a unit each, Horner's rule by one unit per
@@ -43,29 +38,22 @@ std::optional<double> measured_epicenter_ulp(const LobeKernel& kernel, Arithmeti
   double absolute_sum = 0, sigma_power = 1;
   for (int i = 0; i <= degree; ++i, sigma_power *= sigma)
     absolute_sum += std::fabs(c[i]) * sigma_power;
-  const double reference_error = w_epicenter * (scale * reference.approximation_error +
-                                                (2 * degree + 3) * kDoubleUnit * absolute_sum) +
-                                 2 * kDoubleUnit * scale;
+  const EpicenterReference exact{
+      c.data(), degree, double(kernel.center_t), scale,
+      w_epicenter * (scale * reference.approximation_error +
+                     (2 * degree + 3) * kDoubleUnit * absolute_sum) +
+          2 * kDoubleUnit * scale};
 
+  // In chunks that stay in L1, the reference on the best arch's double lanes.
+  const EpicenterSweepKernel sweep = best_kernel_table().epicenter_worst_ulp;
+  std::vector<float> t(std::size_t(std::min<long>(count, kChunk))), out(t.size());
   double worst = 0;
-  for (long first = 0; first < count; first += kChains) {
-    double s[kChains], w[kChains], q[kChains];
-    const int lanes = int(std::min<long>(kChains, count - first));
-    for (int j = 0; j < kChains; ++j) {
-      const double t_j = t[first + std::min(j, lanes - 1)];
-      s[j] = double(kernel.center_t) - t_j;
-      w[j] = 1.0 - t_j;
-      q[j] = c[degree];
-    }
-    for (int i = degree; i-- > 0;)
-      for (int j = 0; j < kChains; ++j) q[j] = q[j] * s[j] + c[i];
-    for (int j = 0; j < lanes; ++j) {
-      const double exact = scale - w[j] * q[j];
-      // The ulp of the smallest value the exact one can be.
-      const double ulp = ulp_of_float(exact - reference_error);
-      const double error = std::fabs(double(out[first + j]) - exact) + reference_error;
-      worst = std::max(worst, error / ulp);
-    }
+  for (long first = 0; first < count; first += kChunk) {
+    const std::size_t size = std::size_t(std::min<long>(kChunk, count - first));
+    for (std::size_t i = 0; i < size; ++i)
+      t[i] = std::bit_cast<float>(std::bit_cast<std::uint32_t>(1.0f) - std::uint32_t(first + long(i)));
+    kernels->of(kernel)(kernel, t.data(), out.data(), size);
+    worst = std::max(worst, sweep(exact, t.data(), out.data(), size));
   }
   return worst;
 }

@@ -18,9 +18,10 @@
 
 namespace kutlog::detail {
 
-// Epicenters of more floats are not run (lobes of n below a few hundred): the check would
-// cost more than the setup's budget, and the certified forms serve them.
-inline constexpr long kMaxCheckedEpicenterFloats = 1L << 14;
+// Epicenters of more floats are not run (lobes of n below about 70, by k and Q): the check
+// would cost more than the setup's budget (a Lobe in at most a millisecond), and the certified
+// forms serve them.
+inline constexpr long kMaxCheckedEpicenterFloats = 1L << 17;
 
 // The largest error of a polynomial kernel for SIMD lanes of that arithmetic (fused or
 // unfused) over every float t in [1 - w_epicenter, 1], in ulps of the exact scale F, against
@@ -36,5 +37,9 @@ std::optional<double> measured_epicenter_ulp(const LobeKernel& kernel, Arithmeti
 // (src/dispatch.cpp), or nullptr if it has none; nullptr for the scalar path.
 struct LobeArrayKernels;
 const LobeArrayKernels* lobe_array_kernels_for(Arithmetic arithmetic);
+// The kernels of this CPU's best arch, whatever KUTLOG_ARCH or force_arch choose: the sweep's
+// reference runs there.
+struct KernelTable;
+const KernelTable& best_kernel_table();
 
 }  // namespace kutlog::detail

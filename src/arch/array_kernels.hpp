@@ -7,6 +7,7 @@
 #include <cstddef>
 
 #include "arch/array_loops.hpp"
+#include "arch/epicenter_loops.hpp"
 #include "arch/kernel_table.hpp"
 #include "arch/lobe_loops.hpp"
 #include "arch/sample_loops.hpp"
@@ -58,6 +59,7 @@ KernelTable make_kernel_table() {
   table.shade_cosines = &shade_cosines_array<Arch>;
   table.sample_lobe = &sample_lobe_array<Arch>;
   table.sample_one = &simd::one_sample::sample<Arch>;
+  table.epicenter_worst_ulp = &epicenter_worst_ulp<Arch>;
   table.schlick = [](const float* t, float n, float* out, std::size_t count) {
     const F exponent(n);
     map_arrays<Arch, 1>([&](F v) { return simd::schlick(v, exponent); }, {t}, out, count);

@@ -33,6 +33,16 @@ using SampleArrayKernel = void (*)(const SamplerKernel&, const float* u1, const 
                                    DirectionSamples, std::size_t);
 using SampleOneKernel = SampledDirection (*)(const SamplerKernel&, float u1, float u2);
 
+// The reference of src/epicenter_check.hpp's sweep: scale - (1 - t) p(center - t), p's
+// coefficients c[0..degree] in double, and the bound on its own error.
+struct EpicenterReference {
+  const double* coefficients;
+  int degree;
+  double center, scale, error;
+};
+using EpicenterSweepKernel = double (*)(const EpicenterReference&, const float* t,
+                                        const float* out, std::size_t);
+
 // A LobeArrayKernels first (its fused_fma: which of a Lobe's kernels this arch runs), so that
 // the active table is what detail::active_lobe_loops points to (kutlog/lobe.hpp).
 struct KernelTable : LobeArrayKernels {
@@ -53,6 +63,7 @@ struct KernelTable : LobeArrayKernels {
   ShadeCosinesKernel shade_cosines;
   SampleArrayKernel sample_lobe;
   SampleOneKernel sample_one;
+  EpicenterSweepKernel epicenter_worst_ulp;
   // Whether simd::mul_add rounds once on this arch, as measured (tests/test_cpu_features.cpp).
   bool (*mul_add_rounds_once)();
 };
