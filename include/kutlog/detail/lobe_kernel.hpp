@@ -40,7 +40,8 @@ struct LobeKernel {
   // The scalar path's value before its rounding. Always inlined, as evaluate: GCC would call
   // them for their size.
   [[gnu::always_inline]] double unrounded(float t) const noexcept {
-    const double t_capped = t < 1.0f ? double(t) : 1.0, w = 1.0 - t_capped;  // NaN kept
+    // A float min (minss), where the double select was a branch; NaN kept.
+    const double t_capped = double(std::min(t, 1.0f)), w = 1.0 - t_capped;
     if (form == Form::base_power)
       return with_q(w, [&](double q) { return scale_d * detail::integer_power(1.0 - w * q, k); });
     return with_q(double(center_t) - t_capped, [&](double q) { return scale_d - w * q; });
