@@ -46,7 +46,8 @@ struct LobeKernel {
       return with_q(w, [&](double q) { return scale_d * detail::integer_power(1.0 - w * q, k); });
     return with_q(double(center_t) - t_capped, [&](double q) { return scale_d - w * q; });
   }
-  // A branch, not a select: past the cut the polynomial's values would cost one every call.
+  // A branch, not a select: a select pays the polynomial on every call, where a rasterizer's
+  // fragments past the cut come in runs the branch predictor learns (docs/benchmarks.md).
   [[gnu::always_inline]] float evaluate(float t) const noexcept {
     if (!(t > t_cut)) return t == t ? 0.0f : t;
     return std::min(std::max(float(unrounded(t)), 0.0f), scale_f);
