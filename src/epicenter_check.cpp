@@ -50,8 +50,9 @@ std::optional<double> measured_epicenter_ulp(const LobeKernel& kernel, Arithmeti
   double worst = 0;
   for (long first = 0; first < count; first += kChunk) {
     const std::size_t size = std::size_t(std::min<long>(kChunk, count - first));
+    const std::uint32_t first_bits = std::bit_cast<std::uint32_t>(1.0f) - std::uint32_t(first);
     for (std::size_t i = 0; i < size; ++i)
-      t[i] = std::bit_cast<float>(std::bit_cast<std::uint32_t>(1.0f) - std::uint32_t(first + long(i)));
+      t[i] = std::bit_cast<float>(first_bits - std::uint32_t(i));
     kernels->of(kernel)(kernel, t.data(), out.data(), size);
     worst = std::max(worst, sweep(exact, t.data(), out.data(), size));
   }

@@ -4,9 +4,8 @@
 namespace kutlog::detail {
 
 // base^exponent, exponent >= 0. Inlined, and tagged by the arch whose flags compile it, so
-// no copy built for one arch is kept for another.
-// The powers up to 5 (the lobes' usual k) are written out: the same products as the loop's, in
-// one jump rather than a loop a batch.
+// no copy built for one arch is kept for another. Exponents up to 5 (the lobes' usual k) are
+// written out, the loop's own products, in one jump rather than a loop per batch.
 template <class Tag = void, class T>
 [[gnu::always_inline]] inline T integer_power(T base, int exponent) {
   const T square = base * base;
