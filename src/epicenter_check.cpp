@@ -34,7 +34,9 @@ std::optional<double> measured_epicenter_ulp(const LobeKernel& kernel, Arithmeti
   const int degree = int(reference.monomials.size()) - 1;
   std::vector<double> c(degree + 1);
   for (int i = 0; i <= degree; ++i) c[i] = double(scale * reference.monomials[i]);
-  const double sigma = 1.0 - double(kernel.center_t);  // |s| <= 1 - center_t on the epicenter
+  // |s| on the epicenter, whose ends are w = 0 and w_epicenter
+  const double w_center = 1.0 - double(kernel.center_t);
+  const double sigma = std::max(w_center, std::fabs(w_epicenter - w_center));
   double absolute_sum = 0, sigma_power = 1;
   for (int i = 0; i <= degree; ++i, sigma_power *= sigma)
     absolute_sum += std::fabs(c[i]) * sigma_power;

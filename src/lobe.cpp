@@ -4,6 +4,7 @@
 #include "kutlog/lobe.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <bit>
 #include <cmath>
@@ -37,11 +38,10 @@ constexpr Target kPreciseTarget{0x1p-22, 2.0};
 constexpr Target kFastTarget{0x1p-16, std::numeric_limits<double>::infinity()};
 
 // q(w) = (1 - B^power) / w on [0, w_max] as a Chebyshev series, with the monomials of its
-// truncations by degree, computed when first asked for.
+// truncations by degree in powers of w - w_center, computed when first asked for.
 class QuotientSeries {
  public:
-  QuotientSeries(const detail::LobeShape& shape, int power, double w_max, double center)
-      : w_max_(w_max), center_(center) {
+  QuotientSeries(const detail::LobeShape& shape, int power, double w_max) : w_max_(w_max) {
     const auto q = [&shape, power](Real w) {
       return Real(shape.one_minus_power(double(w), power)) / w;  // nodes are inside: w > 0
     };
@@ -67,13 +67,18 @@ class QuotientSeries {
     }
   }
 
-  // The fit of this degree with its bound, if the series converged.
-  std::optional<detail::QuotientFit> fit(int degree) {
+  // The fit of this degree about w_center with its bound, if the series converged.
+  std::optional<detail::QuotientFit> fit(int degree, double w_center) {
     if (!converged_ || degree >= int(chebyshev_.size())) return std::nullopt;
-    if (monomials_.size() <= std::size_t(degree)) monomials_.resize(degree + 1);
-    if (monomials_[degree].empty())
-      monomials_[degree] = detail::monomials_from_chebyshev(chebyshev_, degree, 0, w_max_, center_);
-    return detail::QuotientFit{monomials_[degree], truncation_error(degree)};
+    auto cached = std::find_if(monomials_.begin(), monomials_.end(), [&](const Monomials& m) {
+      return m.degree == degree && m.w_center == w_center;
+    });
+    if (cached == monomials_.end())
+      cached = monomials_.insert(
+          monomials_.end(),
+          {degree, w_center,
+           detail::monomials_from_chebyshev(chebyshev_, degree, 0, w_max_, w_center)});
+    return detail::QuotientFit{cached->monomials, truncation_error(degree)};
   }
   double truncation_error(int degree) const {
     return std::size_t(degree) < truncation_errors_.size() ? truncation_errors_[degree] : floor_;
@@ -81,19 +86,23 @@ class QuotientSeries {
   bool converged() const { return converged_; }
   // The fit of the lowest degree whose truncation is below 2^-40 of the peak (w_max q), or of
   // the highest degree the series has: a reference for src/epicenter_check.hpp.
-  std::optional<detail::QuotientFit> reference_fit() {
+  std::optional<detail::QuotientFit> reference_fit(double w_center) {
     if (!converged_) return std::nullopt;
     int degree = 1;
     while (degree + 1 < int(chebyshev_.size()) && truncation_error(degree) * w_max_ > 0x1p-40)
       ++degree;
-    return fit(degree);
+    return fit(degree, w_center);
   }
 
  private:
+  struct Monomials {
+    int degree;
+    double w_center;
+    std::vector<Real> monomials;
+  };
   double w_max_;
-  Real center_;
   std::vector<Real> chebyshev_;
-  std::vector<std::vector<Real>> monomials_;
+  std::vector<Monomials> monomials_;
   std::vector<double> truncation_errors_;  // by degree
   bool converged_ = false;
   double floor_ = 0;
@@ -116,7 +125,8 @@ std::optional<detail::CertifiedError> meets(const LobeKernel& kernel, Arithmetic
   if (certified.abs_error > target.abs_error || certified.epicenter_ulp > limit.epicenter_ulp)
     return std::nullopt;
   if (certified.epicenter_ulp <= target.epicenter_ulp) return certified;
-  const std::optional<detail::QuotientFit> reference = series_to_run->reference_fit();
+  const std::optional<detail::QuotientFit> reference =
+      series_to_run->reference_fit(1 - double(kernel.center_t));
   if (!reference) return std::nullopt;
   const std::optional<double> measured =
       detail::measured_epicenter_ulp(kernel, arithmetic, *reference, scale, profile.w_epicenter);
@@ -150,12 +160,31 @@ void drop_clamp_if_proven(LobeKernel& kernel, detail::CertifiedError& certified,
   kernel.clamped = false;
 }
 
-// F = scale - w q(s), q in powers of s = center_t - t, the distance to the cut-off
+// F = scale - w q(s), q in powers of s = center_t - t, first the distance to the cut-off
 // (center_t ~ cos(gran)): near the cut-off, where scale - w q cancels, s p(s) vanishes and
 // only q's constant term is rounded; near t = 1 the errors of q are multiplied by w, small
-// there. The lowest degree that meets the target, if one does: first in the plain form (one
+// there, unless |s| is large there too (wide lobes): then the center moves up. The lowest
+// degree that meets the target, if one does, at any center: first in the plain form (one
 // multiply-add per degree), its bound certified or its epicenter run; else, with FMA, in the
 // compensated form, about ten operations more.
+// Where q's powers are centered, tried in this order at each degree: at the cut-off, then
+// nearer the peak, where q's error weighs on the 2 ulps of the epicenter. A center below 1/2
+// is raised to 1/2 where s = center_t - t is then exact (src/lobe_bound.cpp).
+constexpr std::array kCenterFractions{1.0, 0.85, 0.7};  // of w_max, below t = 1
+std::vector<float> center_candidates(double w_max) {
+  std::vector<float> centers;
+  const auto add = [&](float center) {
+    if (std::find(centers.begin(), centers.end(), center) == centers.end())
+      centers.push_back(center);
+  };
+  for (double fraction : kCenterFractions) {
+    const float center = float(1 - fraction * w_max);
+    add(center);
+    if (center < 0.5f && 2 * (1 - w_max) >= 0.5) add(0.5f);
+  }
+  return centers;
+}
+
 // A kernel with the bound its setup certified.
 struct CertifiedKernel {
   LobeKernel kernel;
@@ -168,37 +197,41 @@ std::optional<CertifiedKernel> fit_polynomial(LobeKernel kernel, QuotientSeries&
                                          const Target& target, Arithmetic arithmetic) {
   kernel.form = LobeKernel::Form::polynomial;
   const float scale_lo = float(scale - double(kernel.scale_f));
+  const std::vector<float> centers = center_candidates(w_max);
   for (bool compensated : {false, true}) {
     if (compensated && arithmetic != Arithmetic::fused) break;
     kernel.compensated = compensated;
     for (int degree = 1; degree <= 16 && series.converged(); ++degree) {
       // The approximation alone must leave room: w_max q's truncation error at least.
       if (series.truncation_error(degree) * w_max > target.abs_error) continue;
-      const detail::QuotientFit fit = *series.fit(degree);
       kernel.degree = degree;
-      for (int i = 0; i <= degree; ++i) {
-        kernel.q_d[i] = double(scale * fit.monomials[i]);
-        kernel.q_f[i] = float(kernel.q_d[i]);
-      }
-      // The scale whole, else split (scale_f + (scale_lo - w q): one more rounding, of a term
-      // smaller than the output, against scale_f's whole rounding error in a lower binade).
-      // SIMD kernels of either may be run over the epicenter: the whole scale saves an add
-      // per batch, worth a second run.
-      const bool split = arithmetic != Arithmetic::scalar && (compensated || scale_lo != 0);
-      QuotientSeries* series_to_run =
-          !compensated && arithmetic != Arithmetic::scalar ? &series : nullptr;
-      kernel.scale_lo = 0;
-      std::optional<detail::CertifiedError> certified;
-      if (!compensated)
-        certified = meets(kernel, arithmetic, fit, scale, profile, target, series_to_run);
-      if (!certified && split) {
-        kernel.scale_lo = scale_lo;
-        certified = meets(kernel, arithmetic, fit, scale, profile, target, series_to_run);
-      }
-      if (certified) {
-        if (arithmetic != Arithmetic::scalar)
-          drop_clamp_if_proven(kernel, *certified, shape, target);
-        return CertifiedKernel{kernel, *certified};
+      for (float center_t : centers) {
+        kernel.center_t = center_t;
+        const detail::QuotientFit fit = *series.fit(degree, 1 - double(center_t));
+        for (int i = 0; i <= degree; ++i) {
+          kernel.q_d[i] = double(scale * fit.monomials[i]);
+          kernel.q_f[i] = float(kernel.q_d[i]);
+        }
+        // The scale whole, else split (scale_f + (scale_lo - w q): one more rounding, of a term
+        // smaller than the output, against scale_f's whole rounding error in a lower binade).
+        // SIMD kernels of either may be run over the epicenter: the whole scale saves an add
+        // per batch, worth a second run.
+        const bool split = arithmetic != Arithmetic::scalar && (compensated || scale_lo != 0);
+        QuotientSeries* series_to_run =
+            !compensated && arithmetic != Arithmetic::scalar ? &series : nullptr;
+        kernel.scale_lo = 0;
+        std::optional<detail::CertifiedError> certified;
+        if (!compensated)
+          certified = meets(kernel, arithmetic, fit, scale, profile, target, series_to_run);
+        if (!certified && split) {
+          kernel.scale_lo = scale_lo;
+          certified = meets(kernel, arithmetic, fit, scale, profile, target, series_to_run);
+        }
+        if (certified) {
+          if (arithmetic != Arithmetic::scalar)
+            drop_clamp_if_proven(kernel, *certified, shape, target);
+          return CertifiedKernel{kernel, *certified};
+        }
       }
       // Once the fit's own error is negligible, a higher degree only adds roundings.
       if (series.truncation_error(degree) * w_max < 0x1p-8 * target.abs_error) break;
@@ -215,7 +248,7 @@ std::optional<CertifiedKernel> fit_base_power(LobeKernel kernel, QuotientSeries&
   for (int degree = 1; degree <= LobeKernel::kMaxDegree; ++degree) {
     // A base off by e puts F off by about k e near t = 1: a fit far from the target is skipped.
     if (series.converged() && series.truncation_error(degree) * w_max > target.abs_error) continue;
-    const std::optional<detail::QuotientFit> fit = series.fit(degree);
+    const std::optional<detail::QuotientFit> fit = series.fit(degree, 0);
     if (!fit) break;
     kernel.degree = degree;
     kernel.q_d.fill(0);
@@ -241,7 +274,6 @@ CertifiedKernel fit_kernel(const ref::KutlogLobe& reference, const detail::LobeS
   kernel.scale_f = float(scale);
   kernel.scale_d = scale;
   kernel.k = reference.k();
-  kernel.center_t = float(1 - w_max);
   // No float below 1 on the support (n from about 1e7 up, by k and Q): F is the peak at
   // t >= 1 and 0 below, which q = 0 gives exactly. A fit there divides by the support's width
   // and overflows float (and 0 * inf at t = 1 is NaN).
@@ -297,11 +329,10 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
   const double w_max = 2 * half_sine * half_sine;  // 1 - cos(min(gran, pi/2))
   const detail::LobeShape shape{c_, k_};
   const detail::LobeProfile profile = detail::lobe_profile(shape, w_max);
-  // The polynomial form's q is expanded about the center the float kernels really use.
-  QuotientSeries polynomial_series(shape, k_, w_max, 1 - double(float(1 - w_max)));
+  QuotientSeries polynomial_series(shape, k_, w_max);
   std::optional<QuotientSeries> base;
   const std::function<QuotientSeries&()> base_series = [&]() -> QuotientSeries& {
-    if (!base) base.emplace(shape, 1, w_max, 0.0);
+    if (!base) base.emplace(shape, 1, w_max);
     return *base;
   };
   for (Variant variant : {Variant::precise, Variant::fast})

@@ -146,9 +146,10 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
   }
   // s = center_t - t = w - w_center (polynomial form), else the variable is w itself. In
   // float, center_t - t is exact where Sterbenz's lemma holds: for every t of the support
-  // when center_t >= 1/2; 1 - t is exact for t >= 1/2.
+  // when center_t >= 1/2 and its lowest t >= center_t / 2; 1 - t is exact for t >= 1/2.
   const double w_center = polynomial ? 1.0 - double(kernel.center_t) : 0.0;
-  const bool s_rounded = float_lanes && kernel.center_t < 0.5f;
+  const bool s_rounded = float_lanes && !(kernel.center_t >= 0.5f &&
+                                          2 * (1 - profile.w.back()) >= double(kernel.center_t));
   const bool split_scale = float_lanes && kernel.scale_lo != 0;
   const bool compensated = float_lanes && kernel.compensated;
   if (compensated && (arithmetic != Arithmetic::fused || degree == 0)) return {INFINITY, INFINITY};

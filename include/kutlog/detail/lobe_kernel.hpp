@@ -25,7 +25,7 @@ struct LobeKernel {
   int degree = 0;  // of q
   int k = 1;       // the power, for base_power
   float t_cut = 0;
-  float center_t = 1;  // polynomial: q's powers are of center_t - t; center_t ~ cos(gran)
+  float center_t = 1;  // polynomial: q's powers are of center_t - t, at or above the cut
   float scale_f = 1;
   // scale - scale_f: added before the peak, so that scale_f's rounding does not count whole.
   float scale_lo = 0;
