@@ -1,6 +1,6 @@
 // Benchmarks of the shading lobes, named with the tokens the ratio report reads:
 // lobe/<kernel>/n:<n>/k:<k>/arch:<arch>, kernel in kutlog_precise, kutlog_fast,
-// kutlog_perlane, pow_xsimd, pow_poly_precise, pow_poly_fast, pow_precise, schlick, copy; and
+// kutlog_perlane, kutlog_perlane_fast, pow_xsimd, pow_poly_precise, pow_poly_fast, pow_precise, schlick, copy; and
 // the spans of a renderer,
 // span/<kernel>/n:1000/k:<k>/count:<count>/arch:<arch> (kernel in kutlog_precise, kutlog_fast
 // and shade_cosines, the stream API's), and the stream API on 16x16 tiles,
@@ -93,16 +93,19 @@ inline void register_lobe_benchmarks(Arch arch) {
                 lobe.eval(x, out, N, variant, Normalization::exact_coef);
               });
             });
-      add("kutlog_perlane", at_k, [=](benchmark::State& state) {
-        // A glossiness map around n: each lane's n log-uniform in [n/2, 2n].
-        const PerLaneLobe lobe(std::max(k, n / 2), 2.0 * n, k, kLobeAnchor);
-        std::vector<float> exponents = uniform_inputs(std::log(n / 2.0f), std::log(2.0f * n), 2);
-        for (float& e : exponents) e = std::max(float(k), std::exp(e));
-        run_array(state, arch, lobe_inputs(Lobe(n, k, kLobeAnchor)), exponents,
-                  [&](const float* x, const float* y, float* out) {
-                    lobe.eval(x, y, out, N, Normalization::exact_coef);
-                  });
-      });
+      for (Variant variant : {Variant::precise, Variant::fast})
+        add(variant == Variant::precise ? "kutlog_perlane" : "kutlog_perlane_fast", at_k,
+            [=](benchmark::State& state) {
+              // A glossiness map around n: each lane's n log-uniform in [n/2, 2n].
+              const PerLaneLobe lobe(std::max(k, n / 2), 2.0 * n, k, kLobeAnchor);
+              std::vector<float> exponents =
+                  uniform_inputs(std::log(n / 2.0f), std::log(2.0f * n), 2);
+              for (float& e : exponents) e = std::max(float(k), std::exp(e));
+              run_array(state, arch, lobe_inputs(Lobe(n, k, kLobeAnchor)), exponents,
+                        [&](const float* x, const float* y, float* out) {
+                          lobe.eval(x, y, out, N, variant, Normalization::exact_coef);
+                        });
+            });
     }
     const std::vector<float> t = lobe_inputs(Lobe(n, 1, kLobeAnchor));
     const float exponent = float(n);

@@ -37,9 +37,9 @@ void Lobe::eval_out_of_line(const float* t, float* out, std::size_t count, Varia
   table.of(chosen)(chosen, t, out, count);
 }
 void PerLaneLobe::eval(const float* t, const float* n, float* out, std::size_t count,
-                       Normalization normalization) const noexcept {
-  active_table().kutlog_per_lane(kernel_, normalization == Normalization::exact_coef, t, n, out,
-                                 count);
+                       Variant variant, Normalization normalization) const noexcept {
+  active_table().kutlog_per_lane(kernel(variant), normalization == Normalization::exact_coef, t,
+                                 n, out, count);
 }
 void PowerPoly::eval(const float* t, float* out, std::size_t count) const noexcept {
   active_table().power_poly(kernel_, t, out, count);

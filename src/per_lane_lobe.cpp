@@ -1,5 +1,5 @@
 // Setup of a PerLaneLobe: four polynomials, each fitted (src/polynomial_fit.hpp) to the lowest
-// degree whose float evaluation meets its share of the 2^-20 bound on a dense grid.
+// degree whose float evaluation meets its share of the variant's bound on a dense grid.
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -80,26 +80,33 @@ std::optional<FloatFit> fit_float(const std::function<Real(Real)>& g, double lo,
   return std::nullopt;
 }
 
-constexpr double kTarget = 0x1p-23;
+// Each polynomial's relative error, by variant: a quarter or less of the bound (2^-20, 2^-16)
+// each, leaving the fast variant's power in float its k roundings (k <= 64: 2^-18 at most).
+constexpr double kPreciseTarget = 0x1p-23, kFastTarget = 0x1p-19;
+// F = 0 exactly past the cut-off (v >= (pi/2)^2) asks the cut moved down by more than v's
+// relative error e (measured to 2^-22.5 precise): then F <= B ~ pi/4 (margin + e) where the
+// kernel zeroes it, within the bound (tests/test_lobe.cpp, PerLane*).
+constexpr double kPreciseCutMargin = 0x1p-22, kFastCutMargin = 0x1p-18;
 constexpr float kVCut = float(ref::pi * ref::pi / 4);
 
 // The base B = cos(sqrt(v)) = 1 - v R(v) on [0, v_cut = (pi/2)^2], F = B^k. R's relative
 // error reaches B multiplied by v R = 1 - B <= 1, and F multiplied by k. (Fitting cos^k
 // directly needs degree 20 and more in float for k >= 3: its expansions cancel at one end or
-// the other.) R is the same for every material: fitted once.
-const FloatFit& base_fit() {
-  static const FloatFit fit = [] {
-    const std::optional<FloatFit> r = fit_float(
-        [](Real v) {
-          if (v < 1e-30L) return Real(0.5);
-          const Real half_sine = std::sin(std::sqrt(v) / 2);
-          return 2 * half_sine * half_sine / v;
-        },
-        0, double(kVCut), double(kVCut / 2), kTarget);
-    if (!r) throw std::logic_error("kutlog: no fit of (1 - cos(sqrt(v))) / v meets 2^-23");
-    return *r;
-  }();
-  return fit;
+// the other.) R is the same for every material: fitted once per variant.
+FloatFit fit_base(double target) {
+  const std::optional<FloatFit> r = fit_float(
+      [](Real v) {
+        if (v < 1e-30L) return Real(0.5);
+        const Real half_sine = std::sin(std::sqrt(v) / 2);
+        return 2 * half_sine * half_sine / v;
+      },
+      0, double(kVCut), double(kVCut / 2), target);
+  if (!r) throw std::logic_error("kutlog: no fit of (1 - cos(sqrt(v))) / v meets its target");
+  return *r;
+}
+const FloatFit& base_fit(Variant variant) {
+  static const FloatFit precise = fit_base(kPreciseTarget), fast = fit_base(kFastTarget);
+  return variant == Variant::fast ? fast : precise;
 }
 
 }  // namespace
@@ -119,7 +126,7 @@ PerLaneLobe::PerLaneLobe(double n_min, double n_max, int k, double Q) : k_(k), Q
   if (!(n_max <= std::numeric_limits<float>::max()))
     throw std::invalid_argument("kutlog: n_max = " + std::to_string(n_max) +
                                 " is invalid; the lanes' n are floats, n_max must be <= FLT_MAX");
-  PerLaneKernel& kernel = kernel_;
+  PerLaneKernel& kernel = kernels_[int(Variant::precise)];
   kernel.n_min = float(n_min);
   kernel.n_max = float(n_max);
   // Every lane's lobe fits inside the widest one, that of n_min: t at or below its cut-off is
@@ -138,8 +145,8 @@ PerLaneLobe::PerLaneLobe(double n_min, double n_max, int k, double Q) : k_(k), Q
     throw std::invalid_argument("kutlog: n_max = " + std::to_string(n_max) +
                                 " is invalid with n_min = " + std::to_string(n_min) + " and Q = " +
                                 std::to_string(Q) + ": the range is too wide for one "
-                                "PerLaneLobe (its fit of " + what + " misses 2^-23); split it "
-                                "over several PerLaneLobes");
+                                "PerLaneLobe (its fit of " + what + " misses its target); "
+                                "split it over several PerLaneLobes");
   };
   // c^2 / n = theta_k^2 y / acos(Q^y)^2 and coef / n = y coef(1/y): analytic in y.
   const FloatFit h = fit_or_refuse("c^2 / n", fit_float(
@@ -147,29 +154,38 @@ PerLaneLobe::PerLaneLobe(double n_min, double n_max, int k, double Q) : k_(k), Q
         const double theta_n = ref::acos_of_root(Q, double(1 / y));
         return Real(theta_k * theta_k) * y / Real(theta_n * theta_n);
       },
-      y_lo, y_hi, kernel.y_center, kTarget));
+      y_lo, y_hi, kernel.y_center, kPreciseTarget));
   kernel.h_degree = h.degree;
   kernel.h = h.coefficients;
   const FloatFit coef = fit_or_refuse("coef / n", fit_float(
       [&](Real y) { return y * Real(ref::coef_exact(double(1 / y), k, Q)); }, y_lo, y_hi,
-      kernel.y_center, kTarget));
+      kernel.y_center, kPreciseTarget));
   kernel.k_degree = coef.degree;
   kernel.coef_k = coef.coefficients;
-  // theta^2 / w = (2 asin(sqrt(w/2)))^2 / w, analytic up to w = 2.
-  const FloatFit g = fit_or_refuse("acos(t)^2 / (1 - t)", fit_float(
-      [](Real w) {
-        if (w < 1e-30L) return Real(2);
-        const Real theta = 2 * std::asin(std::sqrt(w / 2));
-        return theta * theta / w;
-      },
-      0, std::max(w_max, 1e-6), 0, kTarget));
-  kernel.g_degree = g.degree;
-  kernel.g = g.coefficients;
-  kernel.v_cut = kVCut;
-  kernel.v_center = kernel.v_cut / 2;
-  kernel.r_degree = base_fit().degree;
-  kernel.r = base_fit().coefficients;
+  kernel.v_center = kVCut / 2;
   kernel.k = k;
+  // The fast variant: the same c^2 and coef (low degrees either way, and its peak the
+  // precise one's), G and R to its target, the power in float.
+  kernels_[int(Variant::fast)] = kernel;
+  for (Variant variant : {Variant::precise, Variant::fast}) {
+    PerLaneKernel& of_variant = kernels_[int(variant)];
+    const double target = variant == Variant::fast ? kFastTarget : kPreciseTarget;
+    // theta^2 / w = (2 asin(sqrt(w/2)))^2 / w, analytic up to w = 2.
+    const FloatFit g = fit_or_refuse("acos(t)^2 / (1 - t)", fit_float(
+        [](Real w) {
+          if (w < 1e-30L) return Real(2);
+          const Real theta = 2 * std::asin(std::sqrt(w / 2));
+          return theta * theta / w;
+        },
+        0, std::max(w_max, 1e-6), 0, target));
+    of_variant.g_degree = g.degree;
+    of_variant.g = g.coefficients;
+    of_variant.r_degree = base_fit(variant).degree;
+    of_variant.r = base_fit(variant).coefficients;
+    of_variant.power_in_float = variant == Variant::fast;
+    const double margin = variant == Variant::fast ? kFastCutMargin : kPreciseCutMargin;
+    of_variant.v_cut = float(double(kVCut) * (1 - margin));
+  }
 }
 
 }  // namespace kutlog

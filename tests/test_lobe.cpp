@@ -242,7 +242,8 @@ TEST_P(LobePerArch, PerLaneMaterialsWithinBoundsAndBetweenZeroAndPeak) {
   unsigned seed = 17;
   LargestErrors largest;
   for (const PerLaneCase& c : per_lane_materials(40, 2026))
-    expect_per_lane_within_bounds(c, seed++, 8192, evaluate_per_lane_array, &largest);
+    for (Variant variant : {Variant::precise, Variant::fast})
+      expect_per_lane_within_bounds(c, seed++, 8192, variant, evaluate_per_lane_array, &largest);
   largest.expect_bounds_reached();
 }
 
@@ -250,16 +251,19 @@ TEST_P(LobePerArch, PerLaneDataRuleAndClamping) {
   const PerLaneLobe lobe(10, 1000, 3, 0.5);
   const float t[] = {1.5f, 1.0f, -0.2f, kNaN, 0.999f, 0.999f, 0.999f, -1.0f};
   const float n[] = {100, 100, 100, 100, kNaN, 1e6f, 2000, kNaN};
-  float out[8];
-  lobe.eval(t, n, out, 8, Normalization::none);
-  EXPECT_EQ(out[0], 1.0f);
-  EXPECT_EQ(out[1], 1.0f);
-  EXPECT_EQ(out[2], 0.0f);
-  EXPECT_TRUE(std::isnan(out[3]));
-  EXPECT_TRUE(std::isnan(out[4]));
-  EXPECT_TRUE(std::isnan(out[7]));  // also off the support
-  EXPECT_EQ(out[5], out[6]);  // both clamped to n_max
-  EXPECT_NEAR(out[6], ref::KutlogLobe(1000, 3, 0.5).eval(0.999f), kLobeBounds[2].max_abs_error());
+  for (Variant variant : {Variant::precise, Variant::fast}) {
+    float out[8];
+    lobe.eval(t, n, out, 8, variant, Normalization::none);
+    EXPECT_EQ(out[0], 1.0f);
+    EXPECT_EQ(out[1], 1.0f);
+    EXPECT_EQ(out[2], 0.0f);
+    EXPECT_TRUE(std::isnan(out[3]));
+    EXPECT_TRUE(std::isnan(out[4]));
+    EXPECT_TRUE(std::isnan(out[7]));  // also off the support
+    EXPECT_EQ(out[5], out[6]);  // both clamped to n_max
+    EXPECT_NEAR(out[6], ref::KutlogLobe(1000, 3, 0.5).eval(0.999f),
+                kLobeBounds[variant == Variant::fast ? 3 : 2].max_abs_error());
+  }
 }
 
 // n_min = n_max: every lane has the same n (tests/fuzz found NaN: the fit's nodes coincided).
@@ -270,14 +274,15 @@ TEST_P(LobePerArch, PerLaneWithOneExponent) {
   for (float v = -0.25f; v <= 1.25f; v += 1.0f / 1024) t.push_back(v), n.push_back(6);
   n[0] = 2, n[1] = 100;  // clamped to 6
   std::vector<float> out(t.size());
-  for (Normalization normalization : {Normalization::none, Normalization::exact_coef}) {
-    lobe.eval(t.data(), n.data(), out.data(), t.size(), normalization);
-    const double scale = normalization == Normalization::none ? 1.0 : reference.coef_exact();
-    for (std::size_t i = 0; i < t.size(); ++i)
-      ASSERT_LE(tools::lobe_abs_error(out[i], scale, reference.eval(t[i])),
-                kLobeBounds[2].max_abs_error())
-          << "t = " << t[i];
-  }
+  for (Variant variant : {Variant::precise, Variant::fast})
+    for (Normalization normalization : {Normalization::none, Normalization::exact_coef}) {
+      lobe.eval(t.data(), n.data(), out.data(), t.size(), variant, normalization);
+      const double scale = normalization == Normalization::none ? 1.0 : reference.coef_exact();
+      for (std::size_t i = 0; i < t.size(); ++i)
+        ASSERT_LE(tools::lobe_abs_error(out[i], scale, reference.eval(t[i])),
+                  kLobeBounds[variant == Variant::fast ? 3 : 2].max_abs_error())
+            << "t = " << t[i];
+    }
 }
 
 // Exponents whose support holds no float below 1, or almost (tests/fuzz found the peak zeroed
@@ -304,12 +309,15 @@ TEST_P(LobePerArch, HugeExponentsKeepTheDataRule) {
     const float n_min = float(c.n_min);
     const std::vector<float> n = {n_min, float(c.n_max), n_min, n_min, n_min, n_min, n_min};
     std::vector<float> out(t.size());
-    lobe.eval(t.data(), n.data(), out.data(), t.size(), Normalization::none);
-    for (int i = 0; i < 3; ++i) EXPECT_EQ(out[i], 1.0f) << "n = " << n[i] << ", t = " << t[i];
-    for (int i = 3; i < 6; ++i) EXPECT_EQ(out[i], 0.0f) << "n = " << n[i] << ", t = " << t[i];
-    lobe.eval(t.data(), n.data(), out.data(), 2, Normalization::exact_coef);
-    for (int i = 0; i < 2; ++i)
-      EXPECT_NEAR(out[i] / ref::coef_exact(n[i], c.k, c.Q), 1, kPerLanePeakError) << "n = " << n[i];
+    for (Variant variant : {Variant::precise, Variant::fast}) {
+      lobe.eval(t.data(), n.data(), out.data(), t.size(), variant, Normalization::none);
+      for (int i = 0; i < 3; ++i) EXPECT_EQ(out[i], 1.0f) << "n = " << n[i] << ", t = " << t[i];
+      for (int i = 3; i < 6; ++i) EXPECT_EQ(out[i], 0.0f) << "n = " << n[i] << ", t = " << t[i];
+      lobe.eval(t.data(), n.data(), out.data(), 2, variant, Normalization::exact_coef);
+      for (int i = 0; i < 2; ++i)
+        EXPECT_NEAR(out[i] / ref::coef_exact(n[i], c.k, c.Q), 1, kPerLanePeakError)
+            << "n = " << n[i];
+    }
   }
 }
 
@@ -358,7 +366,8 @@ TEST_P(LobeExhaustive, PerLaneRandomMaterials) {
   unsigned seed = 1;
   LargestErrors largest;
   for (const PerLaneCase& c : per_lane_materials(kMaterials, 2027))
-    expect_per_lane_within_bounds(c, seed++, lanes, evaluate_per_lane_array, &largest);
+    for (Variant variant : {Variant::precise, Variant::fast})
+      expect_per_lane_within_bounds(c, seed++, lanes, variant, evaluate_per_lane_array, &largest);
   largest.expect_bounds_reached();
 }
 TEST_P(LobeExhaustive, RandomLobesDensely) { expect_random_lobes_densely_within_bounds(); }

@@ -22,9 +22,10 @@ void evaluate_scalar_here(const Lobe& lobe, Variant variant, Normalization norma
                           const float* t, float* out, std::size_t count) {
   for (std::size_t i = 0; i < count; ++i) out[i] = lobe.eval(t[i], variant, normalization);
 }
-void evaluate_per_lane_scalar_here(const PerLaneLobe& lobe, Normalization normalization,
-                                   const float* t, const float* n, float* out, std::size_t count) {
-  for (std::size_t i = 0; i < count; ++i) out[i] = lobe.eval(t[i], n[i], normalization);
+void evaluate_per_lane_scalar_here(const PerLaneLobe& lobe, Variant variant,
+                                   Normalization normalization, const float* t, const float* n,
+                                   float* out, std::size_t count) {
+  for (std::size_t i = 0; i < count; ++i) out[i] = lobe.eval(t[i], n[i], variant, normalization);
 }
 
 TEST(LobeScalar, AccuracyGridEvery97thFloat) { expect_grid_within_bounds(97, evaluate_scalar_here); }
@@ -38,7 +39,8 @@ TEST(LobeScalar, PerLaneMaterialsWithinBoundsAndBetweenZeroAndPeak) {
   // about half the arrays' (whose float roundings the measured bound is; test_lobe.cpp).
   unsigned seed = 17;
   for (const PerLaneCase& c : per_lane_materials(40, 2026))
-    expect_per_lane_within_bounds(c, seed++, 8192, evaluate_per_lane_scalar_here);
+    for (Variant variant : {Variant::precise, Variant::fast})
+      expect_per_lane_within_bounds(c, seed++, 8192, variant, evaluate_per_lane_scalar_here);
 }
 
 // The data rule, the same as the arrays': the peak at t >= 1, 0 at and below the cut and for

@@ -97,7 +97,8 @@ class Lobe {
 };
 
 // A lobe whose n varies per lane (a glossiness map), k and Q per material; lanes' n clamped
-// to [n_min, n_max]. Within 2^-20 scale; peak within kPerLanePeakError (kutlog/accuracy.hpp).
+// to [n_min, n_max]. Precise within 2^-20 scale, fast 2^-16; peak within kPerLanePeakError
+// (kutlog/accuracy.hpp).
 class PerLaneLobe {
  public:
   PerLaneLobe(double n_min, double n_max, int k, double Q);
@@ -107,21 +108,26 @@ class PerLaneLobe {
 
   int k() const { return k_; }
   double Q() const { return Q_; }
-  float eval(float t, float n, Normalization normalization = Normalization::none) const noexcept {
-    return kernel_.evaluate(t, n, normalization == Normalization::exact_coef);
+  // One fragment, in double rounded once: both variants give the same value.
+  float eval(float t, float n, Variant variant = Variant::precise,
+             Normalization normalization = Normalization::none) const noexcept {
+    return kernel(variant).evaluate(t, n, normalization == Normalization::exact_coef);
   }
   template <class T, class N>
     requires(std::is_arithmetic_v<T> && std::is_arithmetic_v<N> &&
              !(std::is_same_v<T, float> && std::is_same_v<N, float>))
-  float eval(T, N, Normalization = Normalization::none) const = delete;
+  float eval(T, N, Variant = Variant::precise, Normalization = Normalization::none) const = delete;
   void eval(const float* t, const float* n, float* out, std::size_t count,
+            Variant variant = Variant::precise,
             Normalization normalization = Normalization::none) const noexcept;
-  const PerLaneKernel& kernel() const { return kernel_; }
+  const PerLaneKernel& kernel(Variant variant = Variant::precise) const {
+    return kernels_[int(variant)];
+  }
 
  private:
   int k_;
   double Q_;
-  PerLaneKernel kernel_;
+  PerLaneKernel kernels_[2];  // by Variant
 };
 
 // scale * t^n by 2^(n log2 t) with polynomials fitted for that n: the strongest pow-based

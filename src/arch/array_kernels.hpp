@@ -40,6 +40,9 @@ KernelTable make_kernel_table() {
   static_cast<LobeArrayKernels&>(table) = lobe_array_kernels<Arch>();
   table.kutlog_per_lane = [](const PerLaneKernel& kernel, bool normalized, const float* t,
                              const float* n, float* out, std::size_t count) {
+    if (kernel.power_in_float)
+      return map_arrays<Arch, 2>(simd::PreparedPerLaneLobe<Arch, true>(kernel, normalized),
+                                 {t, n}, out, count, 1.0f);
     map_arrays<Arch, 2>(simd::PreparedPerLaneLobe<Arch>(kernel, normalized), {t, n}, out, count,
                         1.0f);
   };

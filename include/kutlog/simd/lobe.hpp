@@ -131,7 +131,9 @@ class PreparedLobe {
 };
 
 // A PerLaneKernel with its constants broadcast once: F(t; n) per lane (kutlog/lobe.hpp).
-template <class Arch>
+// kPowerInFloat must equal the kernel's power_in_float (PerLaneLobe's fast variant) or be
+// false (the power then in double lanes, slower and within the precise bound).
+template <class Arch, bool kPowerInFloat = false>
 class PreparedPerLaneLobe {
  public:
   using F = floats<Arch>;
@@ -153,7 +155,12 @@ class PreparedPerLaneLobe {
     const F w = F(1.0f) - xsimd::min(F(1.0f), t);
     const F v = c_squared * (w * horner(w, g_, kernel_.g_degree));
     const F r = horner(v - F(kernel_.v_center), r_, kernel_.r_degree);
-    F value = detail::clamp_zero_to(power_in_double(v, r), F(1.0f));
+    F value;
+    if constexpr (kPowerInFloat)
+      value = detail::clamp_zero_to(
+          kutlog::detail::integer_power(neg_mul_add(v, r, F(1.0f)), kernel_.k), F(1.0f));
+    else
+      value = detail::clamp_zero_to(power_in_double(v, r), F(1.0f));
     if (normalized_) value *= n_clamped * horner(y_offset, coef_k_, kernel_.k_degree);
     // 0 off the support, but NaN for a NaN n there too (the contract: NaN n gives NaN).
     const auto off_support = t <= F(kernel_.t_guard) || v >= F(kernel_.v_cut);
