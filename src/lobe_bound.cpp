@@ -129,18 +129,19 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
                                const QuotientFit& fit, double scale, const LobeProfile& profile,
                                const CertifiedError& limit) {
   const bool polynomial = kernel.form == LobeKernel::Form::polynomial;
-  const bool float_lanes = polynomial && arithmetic != Arithmetic::scalar;
+  // The polynomial form in float: SIMD lanes, or the scalar path where the kernel says so.
+  const bool in_float = polynomial && (arithmetic != Arithmetic::scalar || kernel.scalar_in_float);
   // The scalar path's multiply-adds are fused or not as the caller's flags decide: the
   // unfused bound covers both.
-  const bool product_rounded = arithmetic != Arithmetic::fused || !float_lanes;
-  const double unit = float_lanes ? kFloatUnit : kDoubleUnit;
-  const Rounding round{float_lanes};
+  const bool product_rounded = arithmetic != Arithmetic::fused || !in_float;
+  const double unit = in_float ? kFloatUnit : kDoubleUnit;
+  const Rounding round{in_float};
   const int degree = kernel.degree;
   const double coefficient_scale = polynomial ? scale : 1.0;
   Coefficients stored{}, rounding{};
   for (int i = 0; i <= degree; ++i) {
     const Real exact = coefficient_scale * fit.monomials[i];
-    stored[i] = float_lanes ? double(kernel.q_f[i]) : kernel.q_d[i];
+    stored[i] = in_float ? double(kernel.q_f[i]) : kernel.q_d[i];
     rounding[i] = double(std::fabs(Real(stored[i]) - exact)) +
                   kMonomialRelativeError * double(std::fabs(exact));
   }
@@ -148,19 +149,19 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
   // float, center_t - t is exact where Sterbenz's lemma holds: for every t of the support
   // when center_t >= 1/2 and its lowest t >= center_t / 2; 1 - t is exact for t >= 1/2.
   const double w_center = polynomial ? 1.0 - double(kernel.center_t) : 0.0;
-  const bool s_rounded = float_lanes && !(kernel.center_t >= 0.5f &&
+  const bool s_rounded = in_float && !(kernel.center_t >= 0.5f &&
                                           2 * (1 - profile.w.back()) >= double(kernel.center_t));
-  const bool split_scale = float_lanes && kernel.scale_lo != 0;
-  const bool compensated = float_lanes && kernel.compensated;
+  const bool split_scale = in_float && kernel.scale_lo != 0;
+  const bool compensated = in_float && kernel.compensated;
   if (compensated && (arithmetic != Arithmetic::fused || degree == 0)) return {INFINITY, INFINITY};
   Coefficients above_constant{};  // r's: c_1 .. c_degree
   for (int i = 1; i <= degree; ++i) above_constant[i - 1] = stored[i];
-  const double stored_scale = float_lanes ? double(kernel.scale_f) + double(kernel.scale_lo)
+  const double stored_scale = in_float ? double(kernel.scale_f) + double(kernel.scale_lo)
                                           : kernel.scale_d;
   // Clamping to scale_f moves an output by at most the distance of scale_f below scale.
   const double clamp_error = std::max(0.0, scale - double(kernel.scale_f));
 
-  const bool bounds_q = polynomial && float_lanes && !compensated;  // lowest_q's kernels
+  const bool bounds_q = polynomial && in_float && !compensated;  // lowest_q's kernels
   CertifiedError worst{0, 0, bounds_q ? INFINITY : -INFINITY};
   for (std::size_t j = 0; j + 1 < profile.w.size(); ++j) {
     const double w_hi = profile.w[j + 1];
@@ -203,7 +204,7 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
     const double exact_hi = scale * profile.value[j];  // F decreases with w
     double error;  // before the rounding to float
     if (polynomial) {
-      const double w_rounding = float_lanes && w_hi > 0.5 ? unit * w_hi : 0;
+      const double w_rounding = in_float && w_hi > 0.5 ? unit * w_hi : 0;
       const double w_q = (w_hi + w_rounding) * q_magnitude;
       error = w_hi * q_error + w_rounding * q_magnitude + (product_rounded ? round(w_q) : 0) +
               std::fabs(stored_scale - scale);
@@ -212,7 +213,7 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
                  round(std::fabs(kernel.scale_lo) + w_q + w_hi * lo_magnitude);
       else if (split_scale)
         error += round(std::fabs(kernel.scale_lo) + w_q);  // scale_lo - w q
-      if (!float_lanes) error += round(exact_hi + error);  // the double subtraction
+      if (!in_float) error += round(exact_hi + error);  // the double subtraction
     } else {
       // B = 1 - w q in double, B^k by squaring (at most 13 products for k <= 64), times scale.
       const double w_q = w_hi * q_magnitude;

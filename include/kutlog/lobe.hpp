@@ -16,7 +16,8 @@ namespace kutlog {
 enum class Variant : std::uint8_t { precise, fast };
 enum class Normalization : std::uint8_t { none, exact_coef };
 
-// SIMD lanes with or without FMA, or scalar double rounded once (Lobe::eval(float t)).
+// SIMD lanes with or without FMA, or scalar (Lobe::eval(float t)): double rounded once, or
+// float where its bound allows any fusing.
 enum class Arithmetic : std::uint8_t { unfused, fused, scalar };
 
 // The error bound the setup certified for one kernel, in the contract's units.

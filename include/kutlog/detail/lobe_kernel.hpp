@@ -33,47 +33,57 @@ struct LobeKernel {
   bool compensated = false;
   // Whether the output is clamped to [0, scale_f]; dropped where the setup proves it needless.
   bool clamped = true;
+  // Scalar polynomial form: in float on q_f where its bound allows (fast), else in double.
+  bool scalar_in_float = false;
   double scale_d = 1;
   std::array<float, kMaxDegree + 1> q_f{};   // SIMD polynomial form, times scale
   std::array<double, kMaxDegree + 1> q_d{};  // base_power form; scalar: both forms, times scale
 
-  // The scalar path's value before its rounding. Always inlined, as evaluate: GCC would call
-  // them for their size.
+  // The scalar path's value before its rounding to float. Always inlined, as evaluate: GCC
+  // would call them for their size.
   [[gnu::always_inline]] double unrounded(float t) const noexcept {
     // A float min (minss), where the double select was a branch; NaN kept.
     const double t_capped = double(std::min(t, 1.0f)), w = 1.0 - t_capped;
     if (form == Form::base_power)
-      return with_q(w, [&](double q) { return scale_d * detail::integer_power(1.0 - w * q, k); });
-    return with_q(double(center_t) - t_capped, [&](double q) { return scale_d - w * q; });
+      return with_q(w, q_d,
+                    [&](double q) { return scale_d * detail::integer_power(1.0 - w * q, k); });
+    return with_q(double(center_t) - t_capped, q_d, [&](double q) { return scale_d - w * q; });
+  }
+  // The polynomial form in float, as the SIMD float lanes compute it but by Estrin's scheme.
+  [[gnu::always_inline]] float in_float(float t) const noexcept {
+    const float t_capped = std::min(t, 1.0f), w = 1.0f - t_capped;
+    return with_q(center_t - t_capped, q_f, [&](float q) { return scale_f - w * q; });
   }
   // A branch, not a select: a select pays the polynomial on every call, where a rasterizer's
   // fragments past the cut come in runs the branch predictor learns (docs/benchmarks.md).
   [[gnu::always_inline]] float evaluate(float t) const noexcept {
     if (!(t > t_cut)) return t == t ? 0.0f : t;
-    return std::min(std::max(float(unrounded(t)), 0.0f), scale_f);
+    const float value = scalar_in_float ? in_float(t) : float(unrounded(t));
+    return std::min(std::max(value, 0.0f), scale_f);
   }
 
  private:
   // finish(q(x)) by Estrin's scheme, a chain log2 of the degree deep (src/lobe_bound.cpp).
-  template <class Finish>
-  [[gnu::always_inline]] double with_q(double x, Finish finish) const {
+  template <class T, class Finish>
+  [[gnu::always_inline]] T with_q(T x, const std::array<T, kMaxDegree + 1>& q,
+                                  Finish finish) const {
     switch (degree) {
-      case 0: return finish(q_d[0]);
-      case 1: return finish(estrin<0, 2>(x));
-      case 2: return finish(estrin<0, 3>(x));
-      case 3: return finish(estrin<0, 4>(x));
-      case 4: return finish(estrin<0, 5>(x));
-      case 5: return finish(estrin<0, 6>(x));
-      case 6: return finish(estrin<0, 7>(x));
-      case 7: return finish(estrin<0, 8>(x));
-      case 8: return finish(estrin<0, 9>(x));
-      case 9: return finish(estrin<0, 10>(x));
-      case 10: return finish(estrin<0, 11>(x));
-      case 11: return finish(estrin<0, 12>(x));
-      case 12: return finish(estrin<0, 13>(x));
+      case 0: return finish(q[0]);
+      case 1: return finish(estrin<0, 2>(x, q));
+      case 2: return finish(estrin<0, 3>(x, q));
+      case 3: return finish(estrin<0, 4>(x, q));
+      case 4: return finish(estrin<0, 5>(x, q));
+      case 5: return finish(estrin<0, 6>(x, q));
+      case 6: return finish(estrin<0, 7>(x, q));
+      case 7: return finish(estrin<0, 8>(x, q));
+      case 8: return finish(estrin<0, 9>(x, q));
+      case 9: return finish(estrin<0, 10>(x, q));
+      case 10: return finish(estrin<0, 11>(x, q));
+      case 11: return finish(estrin<0, 12>(x, q));
+      case 12: return finish(estrin<0, 13>(x, q));
       default: {  // the same tree, level by level: pairs, then pairs of pairs
-        std::array<double, kMaxDegree + 1> sums = q_d;
-        double power = x;
+        std::array<T, kMaxDegree + 1> sums = q;
+        T power = x;
         for (std::size_t count = std::size_t(degree) + 1; count > 1;
              count = (count + 1) / 2, power *= power) {
           for (std::size_t j = 0; 2 * j + 1 < count; ++j)
@@ -84,16 +94,16 @@ struct LobeKernel {
       }
     }
   }
-  // The sum of q_d[kFirst + i] x^i over i < kCount.
-  template <int kFirst, int kCount>
-  [[gnu::always_inline]] double estrin(double x) const {
+  // The sum of q[kFirst + i] x^i over i < kCount.
+  template <int kFirst, int kCount, class T>
+  [[gnu::always_inline]] static T estrin(T x, const std::array<T, kMaxDegree + 1>& q) {
     if constexpr (kCount == 1) {
-      return q_d[kFirst];
+      return q[kFirst];
     } else {
       constexpr int kLow = int(std::bit_floor(unsigned(kCount - 1)));
-      double power = x;
+      T power = x;
       for (int m = 1; m < kLow; m *= 2) power *= power;
-      return estrin<kFirst, kLow>(x) + power * estrin<kFirst + kLow, kCount - kLow>(x);
+      return estrin<kFirst, kLow>(x, q) + power * estrin<kFirst + kLow, kCount - kLow>(x, q);
     }
   }
 };
