@@ -93,19 +93,23 @@ constexpr float kVCut = float(ref::pi * ref::pi / 4);
 // error reaches B multiplied by v R = 1 - B <= 1, and F multiplied by k. (Fitting cos^k
 // directly needs degree 20 and more in float for k >= 3: its expansions cancel at one end or
 // the other.) R is the same for every material: fitted once per variant.
-FloatFit fit_base(double target) {
-  const std::optional<FloatFit> r = fit_float(
+FloatFit fit_base(double target, int degree) {
+  std::optional<FloatFit> r = fit_float(
       [](Real v) {
         if (v < 1e-30L) return Real(0.5);
         const Real half_sine = std::sin(std::sqrt(v) / 2);
         return 2 * half_sine * half_sine / v;
       },
       0, double(kVCut), double(kVCut / 2), target);
-  if (!r) throw std::logic_error("kutlog: no fit of (1 - cos(sqrt(v))) / v meets its target");
+  // A lower degree is padded with zeros: Horner's rule adds them exactly.
+  if (!r || r->degree > degree)
+    throw std::logic_error("kutlog: no fit of (1 - cos(sqrt(v))) / v meets its target");
+  r->degree = degree;
   return *r;
 }
 const FloatFit& base_fit(Variant variant) {
-  static const FloatFit precise = fit_base(kPreciseTarget), fast = fit_base(kFastTarget);
+  static const FloatFit precise = fit_base(kPreciseTarget, PerLaneKernel::base_degree(false)),
+                        fast = fit_base(kFastTarget, PerLaneKernel::base_degree(true));
   return variant == Variant::fast ? fast : precise;
 }
 

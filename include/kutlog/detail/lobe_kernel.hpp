@@ -117,6 +117,8 @@ struct PerLaneKernel {
   int k = 1, h_degree = 0, k_degree = 0, g_degree = 0, r_degree = 0;
   // The SIMD power in float lanes (fast: G and R fitted for it), else in double lanes.
   bool power_in_float = false;
+  // R's degree: R is the same for every material, so the SIMD kernels unroll it.
+  static constexpr int base_degree(bool power_in_float) { return power_in_float ? 3 : 4; }
   Coefficients h{}, coef_k{}, g{}, r{};
 
   // The SIMD kernel's formulas in double, rounded once.

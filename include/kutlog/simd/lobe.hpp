@@ -154,7 +154,10 @@ class PreparedPerLaneLobe {
     const F c_squared = n_clamped * horner(y_offset, h_, kernel_.h_degree);
     const F w = F(1.0f) - xsimd::min(F(1.0f), t);
     const F v = c_squared * (w * horner(w, g_, kernel_.g_degree));
-    const F r = horner(v - F(kernel_.v_center), r_, kernel_.r_degree);
+    const F base_offset = v - F(kernel_.v_center);
+    constexpr int kBaseDegree = PerLaneKernel::base_degree(kPowerInFloat);
+    F r = r_[kBaseDegree];
+    for (int i = kBaseDegree; i-- > 0;) r = mul_add(r, base_offset, r_[std::size_t(i)]);
     F value;
     if constexpr (kPowerInFloat)
       value = detail::clamp_zero_to(
