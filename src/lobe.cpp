@@ -108,9 +108,6 @@ class QuotientSeries {
   double floor_ = 0;
 };
 
-// LobeKernel::with_q's last unrolled degree: past it a loop.
-constexpr int kMaxUnrolledScalarDegree = 12;
-
 // Multiplications of B^k by squaring (k = 5: B^2, B^4, B^4 B).
 int power_cost(int k) { return std::bit_width(unsigned(k)) + std::popcount(unsigned(k)) - 2; }
 
@@ -163,13 +160,6 @@ void drop_clamp_if_proven(LobeKernel& kernel, detail::CertifiedError& certified,
   kernel.clamped = false;
 }
 
-// F = scale - w q(s), q in powers of s = center_t - t, first the distance to the cut-off
-// (center_t ~ cos(gran)): near the cut-off, where scale - w q cancels, s p(s) vanishes and
-// only q's constant term is rounded; near t = 1 the errors of q are multiplied by w, small
-// there, unless |s| is large there too (wide lobes): then the center moves up. The lowest
-// degree that meets the target, if one does, at any center: first in the plain form (one
-// multiply-add per degree), its bound certified or its epicenter run; else, with FMA, in the
-// compensated form, about ten operations more.
 // Where q's powers are centered, tried in this order at each degree: at the cut-off, then
 // nearer the peak, where q's error weighs on the 2 ulps of the epicenter. A center below 1/2
 // is raised to 1/2 where s = center_t - t is then exact (src/lobe_bound.cpp).
@@ -194,6 +184,13 @@ struct CertifiedKernel {
   detail::CertifiedError certified;
 };
 
+// F = scale - w q(s), q in powers of s = center_t - t, first the distance to the cut-off
+// (center_t ~ cos(gran)): near the cut-off, where scale - w q cancels, s p(s) vanishes and
+// only q's constant term is rounded; near t = 1 the errors of q are multiplied by w, small
+// there, unless |s| is large there too (wide lobes): then the center moves up. The lowest
+// degree that meets the target, if one does, at any center: first in the plain form (one
+// multiply-add per degree), its bound certified or its epicenter run; else, with FMA, in the
+// compensated form, about ten operations more.
 std::optional<CertifiedKernel> fit_polynomial(LobeKernel kernel, QuotientSeries& series,
                                          const detail::LobeShape& shape, double w_max,
                                          double scale, const detail::LobeProfile& profile,
@@ -288,7 +285,7 @@ CertifiedKernel fit_kernel(const ref::KutlogLobe& reference, const detail::LobeS
     in_float.scalar_in_float = true;
     const std::optional<CertifiedKernel> fitted = fit_polynomial(
         in_float, polynomial_series, shape, w_max, scale, profile, target, arithmetic);
-    if (fitted && fitted->kernel.degree <= kMaxUnrolledScalarDegree) return *fitted;
+    if (fitted && fitted->kernel.degree <= LobeKernel::kMaxUnrolledDegree) return *fitted;
   }
   const std::optional<CertifiedKernel> polynomial =
       fit_polynomial(kernel, polynomial_series, shape, w_max, scale, profile, target, arithmetic);

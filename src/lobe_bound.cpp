@@ -150,14 +150,14 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
   // when center_t >= 1/2 and its lowest t >= center_t / 2; 1 - t is exact for t >= 1/2.
   const double w_center = polynomial ? 1.0 - double(kernel.center_t) : 0.0;
   const bool s_rounded = in_float && !(kernel.center_t >= 0.5f &&
-                                          2 * (1 - profile.w.back()) >= double(kernel.center_t));
+                                       2 * (1 - profile.w.back()) >= double(kernel.center_t));
   const bool split_scale = in_float && kernel.scale_lo != 0;
   const bool compensated = in_float && kernel.compensated;
   if (compensated && (arithmetic != Arithmetic::fused || degree == 0)) return {INFINITY, INFINITY};
   Coefficients above_constant{};  // r's: c_1 .. c_degree
   for (int i = 1; i <= degree; ++i) above_constant[i - 1] = stored[i];
-  const double stored_scale = in_float ? double(kernel.scale_f) + double(kernel.scale_lo)
-                                          : kernel.scale_d;
+  const double stored_scale =
+      in_float ? double(kernel.scale_f) + double(kernel.scale_lo) : kernel.scale_d;
   // Clamping to scale_f moves an output by at most the distance of scale_f below scale.
   const double clamp_error = std::max(0.0, scale - double(kernel.scale_f));
 

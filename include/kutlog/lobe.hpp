@@ -109,7 +109,7 @@ class PerLaneLobe {
 
   int k() const { return k_; }
   double Q() const { return Q_; }
-  // One fragment, in double rounded once: both variants give the same value.
+  // One fragment: the variant's fits evaluated in double, rounded once.
   float eval(float t, float n, Variant variant = Variant::precise,
              Normalization normalization = Normalization::none) const noexcept {
     return kernel(variant).evaluate(t, n, normalization == Normalization::exact_coef);

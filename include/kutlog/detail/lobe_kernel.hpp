@@ -17,6 +17,7 @@ namespace kutlog {
 // F(t) = scale * P(w), w = 1 - min(t, 1), zero where t <= t_cut.
 struct LobeKernel {
   static constexpr int kMaxDegree = 24;
+  static constexpr int kMaxUnrolledDegree = 12;  // the scalar path's: past it a loop
   enum class Form : std::uint8_t {
     polynomial,  // P = 1 - w q(s), s = center_t - min(t, 1); SIMD: q in float lanes
     base_power,  // P = (1 - w q(w))^k; SIMD: q and the power in double lanes
@@ -81,7 +82,7 @@ struct LobeKernel {
       case 10: return finish(estrin<0, 11>(x, q));
       case 11: return finish(estrin<0, 12>(x, q));
       case 12: return finish(estrin<0, 13>(x, q));
-      default: {  // the same tree, level by level: pairs, then pairs of pairs
+      default: {  // past kMaxUnrolledDegree: the same tree, level by level (pairs, ...)
         std::array<T, kMaxDegree + 1> sums = q;
         T power = x;
         for (std::size_t count = std::size_t(degree) + 1; count > 1;
