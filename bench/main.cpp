@@ -87,7 +87,7 @@ void register_scalar_benchmarks() {
   // (/inputs:<count>), in no order it can learn, each costs what a path tracer's random
   // directions would. /inside: every t inside the lobe, where a path tracer evaluates the
   // direction it sampled; /raster: a rasterizer's order, t rising and falling along scanlines
-  // across the highlight.
+  // across the highlight. scalar_kutlog_cut: the caller's own branch on t_cut() before eval.
   for (int n : kFragmentExponents)
     for (const auto& [count, order] : kFragmentDataSets)
       for (int k : {3, 5}) {
@@ -99,6 +99,9 @@ void register_scalar_benchmarks() {
             [lobe](float t) { return lobe->eval(t); }, cosines);
         add(("fragment/scalar_kutlog_fast" + at).c_str(),
             [lobe](float t) { return lobe->eval(t, Variant::fast); }, cosines);
+        add(("fragment/scalar_kutlog_cut" + at).c_str(),
+            [lobe, t_cut = lobe->t_cut()](float t) { return t <= t_cut ? 0.0f : lobe->eval(t); },
+            cosines);
         add(("fragment/scalar_powf" + at).c_str(),
             [exponent = float(n)](float t) { return powf(std::max(t, 0.0f), exponent); },
             cosines);

@@ -143,17 +143,20 @@ std::optional<tools::Table> RatioCollector::fragment_ratios() const {
         const std::string inputs =
             std::to_string(count) + (*order ? std::string(" ") + (order + 1) : "");
         const double kutlog = rate("fragment/scalar_kutlog" + at),
-                     fast = rate("fragment/scalar_kutlog_fast" + at);
+                     fast = rate("fragment/scalar_kutlog_fast" + at),
+                     behind_cut = rate("fragment/scalar_kutlog_cut" + at);
         const double powf = rate("fragment/scalar_powf" + at),
                      pow_double = rate("fragment/scalar_pow_double" + at);
         if (kutlog == 0 || powf == 0 || pow_double == 0) continue;
         any = true;
         for (auto [name, rate_of] :
              {std::pair{"scalar_kutlog", kutlog}, std::pair{"scalar_kutlog_fast", fast},
-              std::pair{"scalar_powf", powf}, std::pair{"scalar_pow_double", pow_double}})
-          table.add_row({name, std::to_string(n), inputs, std::to_string(k),
-                         fmt::format("{:.2f}", 1e9 / rate_of), times(rate_of / powf),
-                         times(rate_of / pow_double)});
+              std::pair{"scalar_kutlog_cut", behind_cut}, std::pair{"scalar_powf", powf},
+              std::pair{"scalar_pow_double", pow_double}})
+          if (rate_of > 0)  // scalar_kutlog_cut is absent from runs before it
+            table.add_row({name, std::to_string(n), inputs, std::to_string(k),
+                           fmt::format("{:.2f}", 1e9 / rate_of), times(rate_of / powf),
+                           times(rate_of / pow_double)});
       }
   return any ? std::optional(std::move(table)) : std::nullopt;
 }

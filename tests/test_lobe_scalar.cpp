@@ -70,6 +70,33 @@ TEST(LobeScalar, DataRuleAsTheArrays) {
   EXPECT_EQ(per_lane.eval(0.999f, 1e6f), per_lane.eval(0.999f, 1000.0f));  // clamped to n_max
 }
 
+// t_cut(), the bound a caller's own branch tests: the largest float at or below the cosine of
+// the cut-off (0 past pi/2), where every kernel, scalar or array, returns 0, as at the 16
+// floats below it.
+TEST(LobeScalar, TCutIsTheLastFloatEveryPathZeroes) {
+  std::vector<LobeCase> lobes = accuracy_grid();
+  for (const LobeCase& c : random_lobes(40, 99)) lobes.push_back(c);
+  for (const LobeCase& c : lobes) {
+    const Lobe lobe(c.n, c.k, c.Q);
+    const double cut = lobe.cutoff_angle() >= ref::pi / 2 ? 0.0 : std::cos(lobe.cutoff_angle());
+    float expected = float(cut);
+    if (double(expected) > cut) expected = std::nextafter(expected, -1.0f);
+    ASSERT_EQ(lobe.t_cut(), expected) << "n = " << c.n << ", k = " << c.k << ", Q = " << c.Q;
+    std::vector<float> t{lobe.t_cut()};
+    while (t.size() < 17) t.push_back(std::nextafter(t.back(), -1.0f));
+    std::vector<float> out(t.size());
+    for (Variant variant : tools::kLobeVariants)
+      for (Normalization normalization : tools::kLobeNormalizations) {
+        EXPECT_EQ(lobe.kernel(variant, normalization, Arithmetic::scalar).t_cut, lobe.t_cut());
+        lobe.eval(t.data(), out.data(), t.size(), variant, normalization);
+        for (std::size_t i = 0; i < t.size(); ++i) {
+          EXPECT_EQ(lobe.eval(t[i], variant, normalization), 0.0f) << "t = " << t[i];
+          EXPECT_EQ(out[i], 0.0f) << "t = " << t[i];
+        }
+      }
+  }
+}
+
 // Every float of each support on the grid (sampled below the cut), and random lobes densely
 // (labelled `exhaustive`).
 TEST(LobeScalarExhaustive, AccuracyGridEveryFloat) {

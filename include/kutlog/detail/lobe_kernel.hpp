@@ -40,27 +40,34 @@ struct LobeKernel {
   std::array<float, kMaxDegree + 1> q_f{};   // SIMD polynomial form, times scale
   std::array<double, kMaxDegree + 1> q_d{};  // base_power form; scalar: both forms, times scale
 
-  // The scalar path's value before its rounding to float. Always inlined, as evaluate: GCC
-  // would call them for their size.
-  [[gnu::always_inline]] double unrounded(float t) const noexcept {
+  // The scalar path's value before its rounding to float, with w times gate (1, or 0 past the
+  // cut, where the value is then scale). Always inlined, as evaluate: GCC would call them for
+  // their size.
+  [[gnu::always_inline]] double unrounded(float t, float gate) const noexcept {
     // A float min (minss), where the double select was a branch; NaN kept.
-    const double t_capped = double(std::min(t, 1.0f)), w = 1.0 - t_capped;
+    const double t_capped = double(std::min(t, 1.0f)), w = (1.0 - t_capped) * double(gate);
     if (form == Form::base_power)
       return with_q(w, q_d,
                     [&](double q) { return scale_d * detail::integer_power(1.0 - w * q, k); });
     return with_q(double(center_t) - t_capped, q_d, [&](double q) { return scale_d - w * q; });
   }
   // The polynomial form in float, as the SIMD float lanes compute it but by Estrin's scheme.
-  [[gnu::always_inline]] float in_float(float t) const noexcept {
-    const float t_capped = std::min(t, 1.0f), w = 1.0f - t_capped;
+  [[gnu::always_inline]] float in_float(float t, float gate) const noexcept {
+    const float t_capped = std::min(t, 1.0f), w = (1.0f - t_capped) * gate;
     return with_q(center_t - t_capped, q_f, [&](float q) { return scale_f - w * q; });
   }
-  // A branch, not a select: a select pays the polynomial on every call, where a rasterizer's
-  // fragments past the cut come in runs the branch predictor learns (docs/benchmarks.md).
+  // Branch-free, so that fragments in random order cost what they cost inside the lobe: past
+  // the cut the polynomial runs at t_cut with w gated to 0, its value scale, and the ceiling
+  // takes it to 0. Masks in integers, since GCC turns float selects and clamps into branches;
+  // w's gate is off the polynomial's chain of dependent operations.
   [[gnu::always_inline]] float evaluate(float t) const noexcept {
-    if (!(t > t_cut)) return t == t ? 0.0f : t;
-    const float value = scalar_in_float ? in_float(t) : float(unrounded(t));
-    return std::min(std::max(value, 0.0f), scale_f);
+    const std::uint32_t inside = -std::uint32_t(t > t_cut);  // all ones or none; none for NaN
+    const float t_inside = std::max(t, t_cut);  // NaN kept
+    const float gate = std::bit_cast<float>(std::bit_cast<std::uint32_t>(1.0f) & inside);
+    const float value =
+        scalar_in_float ? in_float(t_inside, gate) : float(unrounded(t_inside, gate));
+    const float ceiling = std::bit_cast<float>(std::bit_cast<std::uint32_t>(scale_f) & inside);
+    return std::max(std::min(value, ceiling), 0.0f);
   }
 
  private:
