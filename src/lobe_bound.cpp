@@ -129,8 +129,9 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
                                const QuotientFit& fit, double scale, const LobeProfile& profile,
                                const CertifiedError& limit) {
   const bool polynomial = kernel.form == LobeKernel::Form::polynomial;
-  // The polynomial form in float: SIMD lanes, or the scalar path where the kernel says so.
-  const bool in_float = polynomial && (arithmetic != Arithmetic::scalar || kernel.scalar_in_float);
+  // In float: the polynomial form in SIMD lanes, or either form in the scalar path where the
+  // kernel says so (SIMD lanes run the base_power form in double).
+  const bool in_float = arithmetic == Arithmetic::scalar ? kernel.scalar_in_float : polynomial;
   // The scalar path's multiply-adds are fused or not as the caller's flags decide: the
   // unfused bound covers both.
   const bool product_rounded = arithmetic != Arithmetic::fused || !in_float;
@@ -215,13 +216,16 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
         error += round(std::fabs(kernel.scale_lo) + w_q);  // scale_lo - w q
       if (!in_float) error += round(exact_hi + error);  // the double subtraction
     } else {
-      // B = 1 - w q in double, B^k by squaring (at most 13 products for k <= 64), times scale.
-      const double w_q = w_hi * q_magnitude;
-      const double base_error = w_hi * q_error + unit * (w_q + 1 + w_q);
+      // B = 1 - w q, B^k by squaring (at most 13 products for k <= 64), times the stored
+      // scale; in float, w = 1 - t is rounded below t = 1/2.
+      const double w_rounding = in_float && w_hi > 0.5 ? unit * w_hi : 0;
+      const double w_q = (w_hi + w_rounding) * q_magnitude;
+      const double base_error =
+          w_hi * q_error + w_rounding * q_magnitude + unit * (w_q + 1 + w_q);
       const double base_hi = profile.base[j] + base_error;
       const double power_hi = detail::integer_power(base_hi, kernel.k - 1);
       error = scale * (kernel.k * power_hi * base_error + 14 * unit * power_hi * base_hi) +
-              unit * scale * power_hi * base_hi;
+              (unit * scale + std::fabs(stored_scale - scale)) * power_hi * base_hi;
     }
     error += 0.5 * ulp_of_float(exact_hi + error);
     error = std::max(error, clamp_error) * (1 + 0x1p-40);  // and this computation's own roundings

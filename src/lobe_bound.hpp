@@ -14,7 +14,8 @@
 //                   holds, else rounded;
 //   the final ops:  scale - w q (or scale_f + (scale_lo - w q)), the rounding to float, the
 //                   clamp to [0, scale_f].
-// For the base_power form (B^k in double), the base's error reaches F multiplied by k B^(k-1).
+// For the base_power form (B^k: in double lanes, or in float or double on the scalar path), the
+// base's error reaches F multiplied by k B^(k-1).
 #pragma once
 
 #include <bit>

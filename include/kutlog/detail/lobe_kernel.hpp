@@ -34,26 +34,34 @@ struct LobeKernel {
   bool compensated = false;
   // Whether the output is clamped to [0, scale_f]; dropped where the setup proves it needless.
   bool clamped = true;
-  // Scalar polynomial form: in float on q_f where its bound allows (fast), else in double.
+  // The scalar path: in float on q_f where its bound allows (fast, mostly), else in double.
   bool scalar_in_float = false;
   double scale_d = 1;
-  std::array<float, kMaxDegree + 1> q_f{};   // SIMD polynomial form, times scale
-  std::array<double, kMaxDegree + 1> q_d{};  // base_power form; scalar: both forms, times scale
+  // center_t for the scalar path in double: the float is reloaded and converted on every call
+  // (a float output may alias it), a double is loaded once per loop.
+  double center_d = 1;
+  // q's coefficients, times scale in the polynomial form: q_f for float (SIMD polynomial form,
+  // scalar_in_float), q_d for double (SIMD base_power form, the scalar path otherwise).
+  std::array<float, kMaxDegree + 1> q_f{};
+  std::array<double, kMaxDegree + 1> q_d{};
 
   // The scalar path's value before its rounding to float, with w times gate (1, or 0 past the
   // cut, where the value is then scale). Always inlined, as evaluate: GCC would call them for
   // their size.
-  [[gnu::always_inline]] double unrounded(float t, float gate) const noexcept {
+  [[gnu::always_inline]] double unrounded(float t, double gate) const noexcept {
     // A float min (minss), where the double select was a branch; NaN kept.
-    const double t_capped = double(std::min(t, 1.0f)), w = (1.0 - t_capped) * double(gate);
+    const double t_capped = double(std::min(t, 1.0f)), w = (1.0 - t_capped) * gate;
     if (form == Form::base_power)
       return with_q(w, q_d,
                     [&](double q) { return scale_d * detail::integer_power(1.0 - w * q, k); });
-    return with_q(double(center_t) - t_capped, q_d, [&](double q) { return scale_d - w * q; });
+    return with_q(center_d - t_capped, q_d, [&](double q) { return scale_d - w * q; });
   }
-  // The polynomial form in float, as the SIMD float lanes compute it but by Estrin's scheme.
+  // Either form in float, by Estrin's scheme (the polynomial form as the SIMD float lanes).
   [[gnu::always_inline]] float in_float(float t, float gate) const noexcept {
     const float t_capped = std::min(t, 1.0f), w = (1.0f - t_capped) * gate;
+    if (form == Form::base_power)
+      return with_q(w, q_f,
+                    [&](float q) { return scale_f * detail::integer_power(1.0f - w * q, k); });
     return with_q(center_t - t_capped, q_f, [&](float q) { return scale_f - w * q; });
   }
   // Branch-free, so that fragments in random order cost what they cost inside the lobe: past
@@ -61,12 +69,15 @@ struct LobeKernel {
   // takes it to 0. Masks in integers, since GCC turns float selects and clamps into branches;
   // w's gate is off the polynomial's chain of dependent operations.
   [[gnu::always_inline]] float evaluate(float t) const noexcept {
-    const std::uint32_t inside = -std::uint32_t(t > t_cut);  // all ones or none; none for NaN
+    const bool inside = t > t_cut;  // false for NaN
+    const std::uint32_t mask = -std::uint32_t(inside);
     const float t_inside = std::max(t, t_cut);  // NaN kept
-    const float gate = std::bit_cast<float>(std::bit_cast<std::uint32_t>(1.0f) & inside);
     const float value =
-        scalar_in_float ? in_float(t_inside, gate) : float(unrounded(t_inside, gate));
-    const float ceiling = std::bit_cast<float>(std::bit_cast<std::uint32_t>(scale_f) & inside);
+        scalar_in_float
+            ? in_float(t_inside, std::bit_cast<float>(std::bit_cast<std::uint32_t>(1.0f) & mask))
+            : float(unrounded(t_inside, std::bit_cast<double>(std::bit_cast<std::uint64_t>(1.0) &
+                                                              -std::uint64_t(inside))));
+    const float ceiling = std::bit_cast<float>(std::bit_cast<std::uint32_t>(scale_f) & mask);
     return std::max(std::min(value, ceiling), 0.0f);
   }
 
