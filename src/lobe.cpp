@@ -111,25 +111,42 @@ class QuotientSeries {
 // Multiplications of B^k by squaring (k = 5: B^2, B^4, B^4 B).
 int power_cost(int k) { return std::bit_width(unsigned(k)) + std::popcount(unsigned(k)) - 2; }
 
-// Whether a kernel meets the target: by its certified bound or, for a SIMD kernel (one whose
-// bound met the absolute promise and missed the epicenter's by at most twice), by running it
-// on every float of the epicenter (src/epicenter_check.hpp). If it does, its
-// certified bound.
+// Within this factor of the target on the support's pieces, a bound is tried again on finer
+// pieces (src/lobe_bound.hpp; unfused float lanes at k = 5, n = 100 and 1000: 2^-21.9 on
+// the pieces, 2^-22 on the finer ones).
+constexpr double kNearMiss = 1.25;
+
+// The support in pieces (detail::kProfilePieces), and a lazy finer cut for a second pass.
+struct Profiles {
+  const detail::LobeProfile& coarse;
+  const std::function<const detail::LobeProfile&()>& fine;
+};
+
+// Whether a kernel meets the target: by its certified bound (on the finer pieces too, if
+// `finer` and it missed by little) or, for a SIMD kernel (one whose bound met the absolute
+// promise and missed the epicenter's by at most twice), by running it on every float of the
+// epicenter (src/epicenter_check.hpp). If it does, its certified bound.
 std::optional<detail::CertifiedError> meets(const LobeKernel& kernel, Arithmetic arithmetic,
                                             const detail::QuotientFit& fit, double scale,
-                                            const detail::LobeProfile& profile,
+                                            const Profiles& profiles, bool finer,
                                             const Target& target, QuotientSeries* series_to_run) {
   const Target limit{target.abs_error, (series_to_run ? 2 : 1) * target.epicenter_ulp};
-  const detail::CertifiedError certified =
-      detail::certified_error(kernel, arithmetic, fit, scale, profile, limit);
-  if (certified.abs_error > target.abs_error || certified.epicenter_ulp > limit.epicenter_ulp)
-    return std::nullopt;
+  const auto misses = [&](const detail::CertifiedError& bound, double factor) {
+    return bound.abs_error > factor * limit.abs_error ||
+           bound.epicenter_ulp > factor * limit.epicenter_ulp;
+  };
+  detail::CertifiedError certified =
+      detail::certified_error(kernel, arithmetic, fit, scale, profiles.coarse, limit);
+  if (finer && misses(certified, 1) && !misses(certified, kNearMiss))
+    certified = detail::certified_error(kernel, arithmetic, fit, scale, profiles.fine(), limit);
+  if (misses(certified, 1)) return std::nullopt;
   if (certified.epicenter_ulp <= target.epicenter_ulp) return certified;
   const std::optional<detail::QuotientFit> reference =
       series_to_run->reference_fit(1 - double(kernel.center_t));
   if (!reference) return std::nullopt;
   const std::optional<double> measured =
-      detail::measured_epicenter_ulp(kernel, arithmetic, *reference, scale, profile.w_epicenter);
+      detail::measured_epicenter_ulp(kernel, arithmetic, *reference, scale,
+                                     profiles.coarse.w_epicenter);
   if (measured && *measured <= target.epicenter_ulp) return certified;
   return std::nullopt;
 }
@@ -193,12 +210,15 @@ struct CertifiedKernel {
 // compensated form, about ten operations more.
 std::optional<CertifiedKernel> fit_polynomial(LobeKernel kernel, QuotientSeries& series,
                                          const detail::LobeShape& shape, double w_max,
-                                         double scale, const detail::LobeProfile& profile,
+                                         double scale, const Profiles& profiles,
                                          const Target& target, Arithmetic arithmetic) {
   kernel.form = LobeKernel::Form::polynomial;
   const float scale_lo = float(scale - double(kernel.scale_f));
   const std::vector<float> centers = center_candidates(w_max);
-  for (bool compensated : {false, true}) {
+  // A pass on the support's pieces, then one on finer pieces for the kernels that missed by
+  // little, before the compensated form.
+  for (auto [compensated, finer] : {std::pair{false, false}, std::pair{false, true},
+                                    std::pair{true, false}, std::pair{true, true}}) {
     if (compensated && arithmetic != Arithmetic::fused) break;
     kernel.compensated = compensated;
     for (int degree = 1; degree <= 16 && series.converged(); ++degree) {
@@ -223,10 +243,12 @@ std::optional<CertifiedKernel> fit_polynomial(LobeKernel kernel, QuotientSeries&
         kernel.scale_lo = 0;
         std::optional<detail::CertifiedError> certified;
         if (!compensated)
-          certified = meets(kernel, arithmetic, fit, scale, profile, target, series_to_run);
+          certified =
+              meets(kernel, arithmetic, fit, scale, profiles, finer, target, series_to_run);
         if (!certified && split) {
           kernel.scale_lo = scale_lo;
-          certified = meets(kernel, arithmetic, fit, scale, profile, target, series_to_run);
+          certified =
+              meets(kernel, arithmetic, fit, scale, profiles, finer, target, series_to_run);
         }
         if (certified) {
           if (arithmetic != Arithmetic::scalar)
@@ -244,7 +266,7 @@ std::optional<CertifiedKernel> fit_polynomial(LobeKernel kernel, QuotientSeries&
 // B^k, B = cos(c theta) = 1 - w q(w), which converges for every lobe: in double lanes, or on
 // the scalar path in double or, where kernel.scalar_in_float, in float.
 std::optional<CertifiedKernel> fit_base_power(LobeKernel kernel, QuotientSeries& series, double w_max,
-                                         double scale, const detail::LobeProfile& profile,
+                                         double scale, const Profiles& profiles,
                                          const Target& target, Arithmetic arithmetic) {
   kernel.form = LobeKernel::Form::base_power;
   for (int degree = 1; degree <= LobeKernel::kMaxDegree; ++degree) {
@@ -259,7 +281,7 @@ std::optional<CertifiedKernel> fit_base_power(LobeKernel kernel, QuotientSeries&
       kernel.q_d[i] = double(fit->monomials[i]);
       kernel.q_f[i] = float(kernel.q_d[i]);
     }
-    if (const auto certified = meets(kernel, arithmetic, *fit, scale, profile, target, nullptr))
+    if (const auto certified = meets(kernel, arithmetic, *fit, scale, profiles, false, target, nullptr))
       return CertifiedKernel{kernel, *certified};
     // In float, once the fit's own error is negligible, a higher degree only adds roundings:
     // the try ends there (it fails for the precise variant, whose setup it would slow).
@@ -278,7 +300,7 @@ std::optional<CertifiedKernel> fit_base_power(LobeKernel kernel, QuotientSeries&
 CertifiedKernel fit_kernel(const ref::KutlogLobe& reference, const detail::LobeShape& shape,
                       QuotientSeries& polynomial_series,
                       const std::function<QuotientSeries&()>& base_series, double w_max,
-                      double scale, const detail::LobeProfile& profile, const Target& target,
+                      double scale, const Profiles& profiles, const Target& target,
                       Arithmetic arithmetic) {
   LobeKernel kernel;
   // F = 0 for t <= cos(gran), and below the horizon (t <= 0) when gran > pi/2.
@@ -301,22 +323,22 @@ CertifiedKernel fit_kernel(const ref::KutlogLobe& reference, const detail::LobeS
     LobeKernel in_float = kernel;
     in_float.scalar_in_float = true;
     std::optional<CertifiedKernel> polynomial = fit_polynomial(
-        in_float, polynomial_series, shape, w_max, scale, profile, target, arithmetic);
+        in_float, polynomial_series, shape, w_max, scale, profiles, target, arithmetic);
     if (polynomial && polynomial->kernel.degree > LobeKernel::kMaxUnrolledDegree)
       polynomial.reset();
     const std::optional<CertifiedKernel> base =
-        fit_base_power(in_float, base_series(), w_max, scale, profile, target, arithmetic);
+        fit_base_power(in_float, base_series(), w_max, scale, profiles, target, arithmetic);
     if (polynomial && (!base || polynomial->kernel.degree <= base->kernel.degree + base_overhead))
       return *polynomial;
     if (base) return *base;
   }
   const std::optional<CertifiedKernel> polynomial =
-      fit_polynomial(kernel, polynomial_series, shape, w_max, scale, profile, target, arithmetic);
+      fit_polynomial(kernel, polynomial_series, shape, w_max, scale, profiles, target, arithmetic);
   if (polynomial &&
       (arithmetic != Arithmetic::scalar || polynomial->kernel.degree < 1 + base_overhead))
     return *polynomial;
   const std::optional<CertifiedKernel> base =
-      fit_base_power(kernel, base_series(), w_max, scale, profile, target, arithmetic);
+      fit_base_power(kernel, base_series(), w_max, scale, profiles, target, arithmetic);
   if (polynomial && (!base || polynomial->kernel.degree <= base->kernel.degree + base_overhead))
     return *polynomial;
   if (base) return *base;
@@ -357,6 +379,13 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
   const double w_max = 2 * half_sine * half_sine;  // 1 - cos(min(gran, pi/2))
   const detail::LobeShape shape{c_, k_};
   const detail::LobeProfile profile = detail::lobe_profile(shape, w_max);
+  std::optional<detail::LobeProfile> fine;
+  const std::function<const detail::LobeProfile&()> fine_profile =
+      [&]() -> const detail::LobeProfile& {
+    if (!fine) fine = detail::lobe_profile(shape, w_max, detail::kFineProfilePieces);
+    return *fine;
+  };
+  const Profiles profiles{profile, fine_profile};
   QuotientSeries polynomial_series(shape, k_, w_max);
   std::optional<QuotientSeries> base;
   const std::function<QuotientSeries&()> base_series = [&]() -> QuotientSeries& {
@@ -372,7 +401,7 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
         const int index = kernel_index(variant, normalization, arithmetic);
         const CertifiedKernel fitted =
             fit_kernel(reference, shape, polynomial_series, base_series, w_max,
-                       normalization == Normalization::exact_coef ? coef_exact_ : 1.0, profile,
+                       normalization == Normalization::exact_coef ? coef_exact_ : 1.0, profiles,
                        target, arithmetic);
         kernels_[index] = fitted.kernel;
         certificates_[index] = {fitted.certified.abs_error, fitted.certified.epicenter_ulp};

@@ -14,10 +14,6 @@ constexpr double kFloatUnit = 0x1p-24, kDoubleUnit = 0x1p-53;  // unit roundoffs
 constexpr double kUnderflow = 0x1p-150;
 // The monomials are exact to long double's precision, not better: each counts as off by this.
 constexpr double kMonomialRelativeError = 0x1p-60;
-// Pieces of the support. More tighten the bound where the lobe's value changes within one
-// (the epicenter's ulp is taken at a piece's lowest value); more than 32 chose the same
-// kernels on the grid, at more setup time.
-constexpr int kPieces = 32;
 // Where the ulp bound applies: F >= 0.6 (kutlog/lobe.hpp).
 constexpr double kEpicenter = 0.6;
 
@@ -104,7 +100,7 @@ HornerBound estrin_bound(const Coefficients& c, int degree, Interval x, Rounding
 
 }  // namespace
 
-LobeProfile lobe_profile(const LobeShape& shape, double w_max) {
+LobeProfile lobe_profile(const LobeShape& shape, double w_max, int pieces) {
   // Half the pieces on the epicenter, which ends at a piece's end: its ulp bound is tighter.
   // Past pi/2 (wide lobes, c < 1) the whole support is epicenter: sin^2 must not wrap around.
   const double x_epicenter =
@@ -120,8 +116,8 @@ LobeProfile lobe_profile(const LobeShape& shape, double w_max) {
     profile.base.push_back(base);
     profile.value.push_back(std::pow(base, shape.k));
   };
-  for (int j = 0; j < kPieces / 2; ++j) add(w_epicenter * j / (kPieces / 2));
-  for (int j = 0; j <= kPieces / 2; ++j) add(w_epicenter + (w_max - w_epicenter) * j / (kPieces / 2));
+  for (int j = 0; j < pieces / 2; ++j) add(w_epicenter * j / (pieces / 2));
+  for (int j = 0; j <= pieces / 2; ++j) add(w_epicenter + (w_max - w_epicenter) * j / (pieces / 2));
   return profile;
 }
 

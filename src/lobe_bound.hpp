@@ -48,7 +48,11 @@ struct LobeProfile {
   std::vector<double> w, base, value;
   double w_epicenter;
 };
-LobeProfile lobe_profile(const LobeShape& shape, double w_max);
+// Pieces of the support. More tighten the bound where the lobe's value changes within one
+// (the epicenter's ulp is taken at a piece's lowest value), at more setup time: the setup
+// certifies on kProfilePieces, and again on kFineProfilePieces a kernel that missed by little.
+inline constexpr int kProfilePieces = 32, kFineProfilePieces = 128;
+LobeProfile lobe_profile(const LobeShape& shape, double w_max, int pieces = kProfilePieces);
 
 // A polynomial fit of q(w) = (1 - B^power) / w (power k: the polynomial form; 1: the base of
 // the base_power form): its exact monomials and a bound on |q - p| over the support.
