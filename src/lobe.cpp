@@ -281,7 +281,8 @@ std::optional<CertifiedKernel> fit_base_power(LobeKernel kernel, QuotientSeries&
       kernel.q_d[i] = double(fit->monomials[i]);
       kernel.q_f[i] = float(kernel.q_d[i]);
     }
-    if (const auto certified = meets(kernel, arithmetic, *fit, scale, profiles, false, target, nullptr))
+    if (const auto certified =
+            meets(kernel, arithmetic, *fit, scale, profiles, false, target, nullptr))
       return CertifiedKernel{kernel, *certified};
     // In float, once the fit's own error is negligible, a higher degree only adds roundings:
     // the try ends there (it fails for the precise variant, whose setup it would slow).

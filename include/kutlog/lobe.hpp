@@ -43,8 +43,9 @@ class Lobe {
   double cutoff_angle() const { return cutoff_angle_; }
   double coef_exact() const { return coef_exact_; }
   // The largest float at or below cos(cutoff_angle()): every eval(t <= t_cut()) is 0. eval
-  // selects, never branches (random order costs no misprediction); a caller whose fragments
-  // past the cut come in runs, as a rasterizer's, skips it on a branch of its own.
+  // selects past the cut, never branches there (random order costs no misprediction); a
+  // caller whose fragments past the cut come in runs, as a rasterizer's, skips it on a branch
+  // of its own.
   float t_cut() const {
     return kernels_[kernel_index(Variant::precise, Normalization::none, Arithmetic::scalar)].t_cut;
   }

@@ -37,8 +37,8 @@ struct LobeKernel {
   // The scalar path: in float on q_f where its bound allows (fast, mostly), else in double.
   bool scalar_in_float = false;
   double scale_d = 1;
-  // center_t for the scalar path in double: the float is reloaded and converted on every call
-  // (a float output may alias it), a double is loaded once per loop.
+  // center_t for the scalar path in double: the float would be converted on every call, as it
+  // is reloaded on every call (a float output may alias it).
   double center_d = 1;
   // q's coefficients, times scale in the polynomial form: q_f for float (SIMD polynomial form,
   // scalar_in_float), q_d for double (SIMD base_power form, the scalar path otherwise).
