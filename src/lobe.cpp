@@ -23,6 +23,7 @@
 #include "lobe_cut.hpp"
 #include "lobe_setup_hook.hpp"
 #include "polynomial_fit.hpp"
+#include "scalar_pieces.hpp"
 
 namespace kutlog {
 using detail::Real;
@@ -295,18 +296,16 @@ std::optional<CertifiedKernel> fit_base_power(LobeKernel kernel, QuotientSeries&
 
 // The kernel for one variant and one arithmetic: in SIMD lanes the polynomial form if it
 // meets the target (float lanes, fastest), else base_power (double lanes); in the scalar
-// path the polynomial form in float if its bound meets the target (the fast variant, mostly:
+// path (where its pieces were not certified) the polynomial form in float if its bound meets the target (the fast variant, mostly:
 // a third faster than in double, n = 1000), else both forms in double, whichever takes fewer
 // operations.
-CertifiedKernel fit_kernel(const ref::KutlogLobe& reference, const detail::LobeShape& shape,
-                      QuotientSeries& polynomial_series,
+CertifiedKernel fit_kernel(const ref::KutlogLobe& reference, float t_cut,
+                      const detail::LobeShape& shape, QuotientSeries& polynomial_series,
                       const std::function<QuotientSeries&()>& base_series, double w_max,
                       double scale, const Profiles& profiles, const Target& target,
                       Arithmetic arithmetic) {
   LobeKernel kernel;
-  // F = 0 for t <= cos(gran), and below the horizon (t <= 0) when gran > pi/2.
-  const double cut = reference.cutoff_angle() >= kPi / 2 ? 0.0 : std::cos(reference.cutoff_angle());
-  kernel.t_cut = detail::float_at_or_below_cut(cut);
+  kernel.t_cut = t_cut;
   kernel.scale_f = float(scale);
   kernel.scale_d = scale;
   kernel.k = reference.k();
@@ -378,6 +377,8 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
   const double limit = reference.integration_limit();
   const double half_sine = std::sin(0.5 * limit);
   const double w_max = 2 * half_sine * half_sine;  // 1 - cos(min(gran, pi/2))
+  // F = 0 for t <= cos(gran), and below the horizon (t <= 0) when gran > pi/2.
+  t_cut_ = detail::float_at_or_below_cut(cutoff_angle_ >= kPi / 2 ? 0.0 : std::cos(cutoff_angle_));
   const detail::LobeShape shape{c_, k_};
   const detail::LobeProfile profile = detail::lobe_profile(shape, w_max);
   std::optional<detail::LobeProfile> fine;
@@ -393,6 +394,7 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
     if (!base) base.emplace(shape, 1, w_max);
     return *base;
   };
+  detail::ScalarPiecesFitter pieces_fitter(shape, t_cut_);
   for (Variant variant : {Variant::precise, Variant::fast})
     for (Normalization normalization : {Normalization::none, Normalization::exact_coef})
       for (Arithmetic arithmetic : {Arithmetic::unfused, Arithmetic::fused, Arithmetic::scalar}) {
@@ -400,10 +402,18 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
         const double factor = detail::lobe_target_factor_for_tests.load(std::memory_order_relaxed);
         const Target target{promised.abs_error * factor, promised.epicenter_ulp * factor};
         const int index = kernel_index(variant, normalization, arithmetic);
+        const double scale = normalization == Normalization::exact_coef ? coef_exact_ : 1.0;
+        // The scalar path: the pieces if certified (the faster form), else a kernel.
+        if (arithmetic == Arithmetic::scalar)
+          if (auto pieces = pieces_fitter.fit(scale, target)) {
+            scalar_pieces_[int(variant) * 2 + int(normalization)] = std::move(pieces->pieces);
+            certificates_[index] = {pieces->certified.abs_error, pieces->certified.epicenter_ulp};
+            kernels_[index].t_cut = t_cut_;
+            continue;
+          }
         const CertifiedKernel fitted =
-            fit_kernel(reference, shape, polynomial_series, base_series, w_max,
-                       normalization == Normalization::exact_coef ? coef_exact_ : 1.0, profiles,
-                       target, arithmetic);
+            fit_kernel(reference, t_cut_, shape, polynomial_series, base_series, w_max, scale,
+                       profiles, target, arithmetic);
         kernels_[index] = fitted.kernel;
         certificates_[index] = {fitted.certified.abs_error, fitted.certified.epicenter_ulp};
         array_slots_[index] = std::uint8_t(detail::LobeArrayKernels::slot_of(kernels_[index]));

@@ -16,8 +16,8 @@ namespace kutlog {
 enum class Variant : std::uint8_t { precise, fast };
 enum class Normalization : std::uint8_t { none, exact_coef };
 
-// SIMD lanes with or without FMA, or scalar (Lobe::eval(float t)): double rounded once, or
-// float where its bound allows any fusing.
+// SIMD lanes with or without FMA, or scalar (Lobe::eval(float t)): a cubic per piece in double,
+// or where those are not certified, a kernel in double or in float, bounded for any fusing.
 enum class Arithmetic : std::uint8_t { unfused, fused, scalar };
 
 // The error bound the setup certified for one kernel, in the contract's units.
@@ -46,15 +46,17 @@ class Lobe {
   // selects past the cut, never branches there (random order costs no misprediction); a
   // caller whose fragments past the cut come in runs, as a rasterizer's, skips it on a branch
   // of its own.
-  float t_cut() const {
-    return kernels_[kernel_index(Variant::precise, Normalization::none, Arithmetic::scalar)].t_cut;
-  }
+  float t_cut() const { return t_cut_; }
 
-  // One fragment, inline (GCC would otherwise call it for its size).
+  // One fragment, inline (GCC would otherwise call it for its size): the certified pieces, or
+  // where the setup could not certify them (lobes cut at the horizon, high k), out of line,
+  // the kernel of Arithmetic::scalar.
   [[gnu::always_inline]] float eval(float t, Variant variant = Variant::precise,
                                     Normalization normalization = Normalization::none) const
       noexcept {
-    return kernel(variant, normalization, Arithmetic::scalar).evaluate(t);
+    const ScalarPieces& pieces = scalar_pieces(variant, normalization);
+    if (pieces.table.empty()) [[unlikely]] return eval_by_kernel(t, variant, normalization);
+    return pieces.evaluate(t);
   }
   // Floats only: a double t would be rounded without a word.
   template <class T>
@@ -86,18 +88,26 @@ class Lobe {
                                        Arithmetic arithmetic) const {
     return certificates_[kernel_index(variant, normalization, arithmetic)];
   }
+  // The scalar eval's pieces; empty where it runs the kernel of Arithmetic::scalar, which is
+  // fitted only then.
+  const ScalarPieces& scalar_pieces(Variant variant, Normalization normalization) const {
+    return scalar_pieces_[int(variant) * 2 + int(normalization)];
+  }
 
  private:
+  float eval_by_kernel(float t, Variant variant, Normalization normalization) const noexcept;
   [[gnu::cold]] void eval_out_of_line(const float* t, float* out, std::size_t count,
                                       Variant variant, Normalization normalization) const noexcept;
 
   double n_, Q_;
   int k_;
   double c_, cutoff_angle_, coef_exact_;
+  float t_cut_;
   static constexpr int kernel_index(Variant variant, Normalization normalization,
                                     Arithmetic arithmetic) {
     return (int(variant) * 2 + int(normalization)) * 3 + int(arithmetic);
   }
+  ScalarPieces scalar_pieces_[2 * 2];  // by variant and normalization
   LobeKernel kernels_[2 * 2 * 3];
   KernelCertificate certificates_[2 * 2 * 3];
   // Each kernel's slot in detail::LobeArrayKernels, computed at setup.

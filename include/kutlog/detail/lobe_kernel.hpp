@@ -7,6 +7,7 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "kutlog/api.hpp"
 #include "kutlog/detail/integer_power.hpp"
@@ -124,6 +125,32 @@ struct LobeKernel {
       for (int m = 1; m < kLow; m *= 2) power *= power;
       return estrin<kFirst, kLow>(x, q) + power * estrin<kFirst + kLow, kCount - kLow>(x, q);
     }
+  }
+};
+
+// The scalar path where its setup certifies it (src/scalar_pieces.hpp): the support
+// w = 1 - t in [0, 1 - t_cut] cut into equal pieces, scale F a cubic on each, in double. No
+// branch on t and no clamp: the setup proves every cubic, its roundings counted, within
+// [0, scale_f]. From t_cut down, x falls in the last piece, whose cubic is 0.
+struct ScalarPieces {
+  // A cubic in powers of u = x - center, lowest first; the center is loaded with it, where
+  // converting the piece's index back to double would take longer. One cache line.
+  struct alignas(64) Piece {
+    std::array<double, 4> cubic;
+    double center;
+  };
+  float t_cut = 0;
+  double pieces_per_w = 0;   // x = w pieces_per_w, in the piece floor(x)
+  std::vector<Piece> table;  // empty where the setup could not certify it
+
+  [[gnu::always_inline]] float evaluate(float t) const noexcept {
+    if (t != t) return t;  // NaN, whose x has no piece
+    const double x = (1.0 - double(std::min(std::max(t, t_cut), 1.0f))) * pieces_per_w;
+    // At most the zero piece: the setup puts x(t_cut) below its index + 1.
+    const Piece& piece = table[std::size_t(std::int64_t(x))];
+    const double u = x - piece.center;
+    const std::array<double, 4>& c = piece.cubic;
+    return float(((c[3] * u + c[2]) * u + c[1]) * u + c[0]);
   }
 };
 
