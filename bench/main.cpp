@@ -34,6 +34,7 @@
 
 #include "benchmark_page.hpp"
 #include "build_info.hpp"
+#include "fragment_benchmarks.hpp"
 #include "inputs.hpp"
 #include "lobe_benchmarks.hpp"
 #include "sampling_benchmarks.hpp"
@@ -54,63 +55,19 @@ void register_math_benchmarks_for(Arch arch) {
   kRegister[static_cast<int>(arch)]();
 }
 
-// out[i] = function(x[i]) one call at a time: kArrayLength inputs in BenchArrays' block, more in
-// vectors of their own.
-template <class Function>
-void scalar_unary(benchmark::State& state, Function function, const std::vector<float>& inputs) {
-  std::optional<BenchArrays> arrays;
-  std::vector<float> outputs;
-  if (inputs.size() == kArrayLength) arrays.emplace(inputs, inputs);
-  else outputs.resize(inputs.size());
-  const float* const x = arrays ? arrays->x() : inputs.data();
-  float* const out = arrays ? arrays->out() : outputs.data();
-  for (auto _ : state) {
-    for (std::size_t i = 0; i < inputs.size(); ++i) out[i] = function(x[i]);
-    benchmark::DoNotOptimize(out);
-    benchmark::ClobberMemory();
-  }
-  state.SetItemsProcessed(state.iterations() * std::int64_t(inputs.size()));
-}
-
 void register_scalar_benchmarks() {
   const auto add = [](const char* name, auto function, std::vector<float> x) {
-    benchmark::RegisterBenchmark(name, [=](benchmark::State& state) { scalar_unary(state, function, x); });
+    register_scalar_unary(name, function, std::move(x));
   };
   add("math/acos/std/arch:scalar", [](float x) { return std::acos(x); }, uniform_inputs(-1, 1));
   add("math/cos/std/arch:scalar", [](float x) { return std::cos(x); }, uniform_inputs(-3.14159f, 3.14159f));
   add("math/exp/std/arch:scalar", [](float x) { return std::exp(x); }, uniform_inputs(-80, 80));
   add("math/log/std/arch:scalar", [](float x) { return std::log(x); }, uniform_inputs(1e-3f, 1e3f));
   add("math/pow/std/arch:scalar", [](float x) { return std::pow(x, 1000.0f); }, uniform_inputs(0, 1));
-  // One fragment at a time, as a fragment shader calls it: t = N.H over the lobe (n = 50 and
-  // 1000), half of it past the cut-off. Over the 4096 inputs run again and again, the CPU's branch
-  // predictor learns part of which fall past it; over kFragmentInputsUnlearned
-  // (/inputs:<count>), in no order it can learn, each costs what a path tracer's random
-  // directions would. /inside: every t inside the lobe, where a path tracer evaluates the
-  // direction it sampled; /raster: a rasterizer's order, t rising and falling along scanlines
-  // across the highlight. scalar_kutlog_cut: the caller's own branch on t_cut() before eval.
-  for (int n : kFragmentExponents)
-    for (const auto& [count, order] : kFragmentDataSets)
-      for (int k : {3, 5}) {
-        const auto lobe = std::make_shared<const Lobe>(n, k, kLobeAnchor);
-        const std::string at = "/n:" + std::to_string(n) + "/k:" + std::to_string(k) +
-                               fragment_inputs_token(count) + order;
-        const std::vector<float> cosines = fragment_inputs(*lobe, count, order);
-        add(("fragment/scalar_kutlog" + at).c_str(),
-            [lobe](float t) { return lobe->eval(t); }, cosines);
-        add(("fragment/scalar_kutlog_fast" + at).c_str(),
-            [lobe](float t) { return lobe->eval(t, Variant::fast); }, cosines);
-        add(("fragment/scalar_kutlog_cut" + at).c_str(),
-            [lobe, t_cut = lobe->t_cut()](float t) { return t <= t_cut ? 0.0f : lobe->eval(t); },
-            cosines);
-        add(("fragment/scalar_powf" + at).c_str(),
-            [exponent = float(n)](float t) { return powf(std::max(t, 0.0f), exponent); },
-            cosines);
-        add(("fragment/scalar_pow_double" + at).c_str(),
-            [exponent = double(n)](float t) {
-              return float(std::pow(double(std::max(t, 0.0f)), exponent));
-            },
-            cosines);
-      }
+  register_fragment_benchmarks("");
+#ifdef KUTLOG_BENCH_NATIVE
+  register_native_fragment_benchmarks();
+#endif
   // One half vector per call, as a path tracer draws them: LobeSampler::sample(u1, u2), and
   // pbrt-v2's Blinn-Phong draw (bench/sampling_benchmarks.hpp); over 4096 pairs, and over 2^18
   // whose order no branch predictor learns, as a path tracer's fresh random numbers.

@@ -1,0 +1,94 @@
+// The per-fragment benchmarks: one scalar call per fragment, named
+// fragment/<function>/n:<n>/k:<k>[/inputs:<count>][/inside|/raster][/flags:<flags>], registered
+// by bench/main.cpp at the compiler's default flags with every peer, and by
+// bench/fragment_native.cpp, compiled with -march=native, for kutlog's eval(t) alone: it is
+// inline, so it runs with the caller's flags.
+#pragma once
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "inputs.hpp"
+#include "lobe_benchmarks.hpp"
+
+namespace kutlog::bench {
+
+void register_native_fragment_benchmarks();  // bench/fragment_native.cpp, where it is built
+
+// Internal linkage: each file that registers these compiles its own copy, with its own flags.
+namespace {
+
+// out[i] = function(x[i]) one call at a time: kArrayLength inputs in BenchArrays' block, more in
+// vectors of their own.
+template <class Function>
+void scalar_unary(benchmark::State& state, Function function, const std::vector<float>& inputs) {
+  std::optional<BenchArrays> arrays;
+  std::vector<float> outputs;
+  if (inputs.size() == kArrayLength) arrays.emplace(inputs, inputs);
+  else outputs.resize(inputs.size());
+  const float* const x = arrays ? arrays->x() : inputs.data();
+  float* const out = arrays ? arrays->out() : outputs.data();
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < inputs.size(); ++i) out[i] = function(x[i]);
+    benchmark::DoNotOptimize(out);
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * std::int64_t(inputs.size()));
+}
+
+template <class Function>
+void register_scalar_unary(const std::string& name, Function function, std::vector<float> x) {
+  benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& state) {
+    scalar_unary(state, function, x);
+  });
+}
+
+// One fragment at a time, as a fragment shader calls it: t = N.H over the lobe (n = 50 and
+// 1000), half of it past the cut-off. Over the 4096 inputs run again and again, the CPU's branch
+// predictor learns part of which fall past it; over kFragmentInputsUnlearned
+// (/inputs:<count>), in no order it can learn, each costs what a path tracer's random
+// directions would. /inside: every t inside the lobe, where a path tracer evaluates the
+// direction it sampled; /raster: a rasterizer's order, t rising and falling along scanlines
+// across the highlight. scalar_kutlog_cut: the caller's own branch on t_cut() before eval.
+// flags: "" at this build's flags, with the peers; else the name of the flags this file was
+// compiled with, kutlog's rows only.
+void register_fragment_benchmarks(const std::string& flags) {
+  for (int n : kFragmentExponents)
+    for (const auto& [count, order] : kFragmentDataSets)
+      for (int k : {3, 5}) {
+        const auto lobe = std::make_shared<const Lobe>(n, k, kLobeAnchor);
+        const std::string at = "/n:" + std::to_string(n) + "/k:" + std::to_string(k) +
+                               fragment_inputs_token(count) + order +
+                               (flags.empty() ? "" : "/flags:" + flags);
+        const std::vector<float> cosines = fragment_inputs(*lobe, count, order);
+        register_scalar_unary("fragment/scalar_kutlog" + at,
+                              [lobe](float t) { return lobe->eval(t); }, cosines);
+        register_scalar_unary("fragment/scalar_kutlog_fast" + at,
+                              [lobe](float t) { return lobe->eval(t, Variant::fast); }, cosines);
+        if (!flags.empty()) continue;
+        register_scalar_unary(
+            "fragment/scalar_kutlog_cut" + at,
+            [lobe, t_cut = lobe->t_cut()](float t) { return t <= t_cut ? 0.0f : lobe->eval(t); },
+            cosines);
+        register_scalar_unary(
+            "fragment/scalar_powf" + at,
+            [exponent = float(n)](float t) { return powf(std::max(t, 0.0f), exponent); },
+            cosines);
+        register_scalar_unary(
+            "fragment/scalar_pow_double" + at,
+            [exponent = double(n)](float t) {
+              return float(std::pow(double(std::max(t, 0.0f)), exponent));
+            },
+            cosines);
+      }
+}
+
+}  // namespace
+}  // namespace kutlog::bench
