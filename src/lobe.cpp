@@ -404,13 +404,21 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
         const int index = kernel_index(variant, normalization, arithmetic);
         const double scale = normalization == Normalization::exact_coef ? coef_exact_ : 1.0;
         // The scalar path: the pieces if certified (the faster form), else a kernel.
-        if (arithmetic == Arithmetic::scalar)
-          if (auto pieces = pieces_fitter.fit(scale, target)) {
-            scalar_pieces_[int(variant) * 2 + int(normalization)] = std::move(pieces->pieces);
-            certificates_[index] = {pieces->certified.abs_error, pieces->certified.epicenter_ulp};
+        if (arithmetic == Arithmetic::scalar) {
+          const auto keep = [&](auto& pieces, auto fitted) {
+            if (!fitted) return false;
+            pieces = std::move(fitted->pieces);
+            certificates_[index] = {fitted->certified.abs_error, fitted->certified.epicenter_ulp};
             kernels_[index].t_cut = t_cut_;
+            return true;
+          };
+          if (variant == Variant::fast
+                  ? keep(fast_pieces_[int(normalization)],
+                         pieces_fitter.fit<FastScalarPieces>(scale, target))
+                  : keep(precise_pieces_[int(normalization)],
+                         pieces_fitter.fit<ScalarPieces>(scale, target)))
             continue;
-          }
+        }
         const CertifiedKernel fitted =
             fit_kernel(reference, t_cut_, shape, polynomial_series, base_series, w_max, scale,
                        profiles, target, arithmetic);

@@ -1,9 +1,11 @@
 #include "scalar_pieces.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "kutlog/detail/float_ulp.hpp"
 #include "kutlog/detail/integer_power.hpp"
@@ -11,43 +13,45 @@
 namespace kutlog::detail {
 namespace {
 
-constexpr double kDoubleUnit = 0x1p-53;
-// Horner's rule on a cubic, three multiplies and three adds: gamma_6 = 6 u / (1 - 6 u).
-constexpr double kHornerGamma = 6 * kDoubleUnit / (1 - 6 * kDoubleUnit);
 // Where the ulp bound applies: F >= 0.6 (kutlog/lobe.hpp).
 constexpr double kEpicenter = 0.6;
-// Nodes of each piece's interpolant: its terms past the cubic bound the truncation, the last
-// four (times 4) what the interpolation aliased, as F's terms decay geometrically.
+// Nodes of each piece's interpolant: its terms past the table's degree bound the truncation,
+// the last four (times 4) what the interpolation aliased, as F's terms decay geometrically.
 constexpr int kNodes = 10;
 // The values at the nodes are doubles, a few ulps each: a floor under every bound.
 constexpr double kValueNoise = 0x1p-50;
 
-using Cubic = std::array<double, 4>;
-
 // Piece 0 is expanded about its start, where t = 1 gives u = 0 and the output scale_f exactly;
-// the others about their middle, where |u| <= 1/2 halves Horner's error.
+// the others about their middle, where |u| <= 1/2 shrinks Horner's error.
 double local_center(int piece) { return piece == 0 ? 0.0 : 0.5; }
 
-// sum_j |c_j| |u|^j for |u| <= bound: Horner's rounding error over gamma_6.
-double magnitude(const Cubic& c, double bound) {
-  return std::fabs(c[0]) + bound * (std::fabs(c[1]) + bound * (std::fabs(c[2]) + bound * std::fabs(c[3])));
+template <std::size_t kTerms>
+double magnitude(const std::array<double, kTerms>& c, double u_bound) {  // sum |c_j| u_bound^j
+  double sum = 0;
+  for (std::size_t j = kTerms; j-- > 0;) sum = sum * u_bound + std::fabs(c[j]);
+  return sum;
 }
 
 struct Range {
   double lo, hi;
 };
-// The cubic's exact range over u in [u_lo, u_hi]: its ends and where its slope vanishes, in
-// long double, widened by that arithmetic's own error.
-Range cubic_range(const Cubic& c, Real u_lo, Real u_hi) {
+// The polynomial's exact range over u in [u_lo, u_hi]: its ends and where its slope vanishes
+// (degree 3 at most), in long double, widened by that arithmetic's own error.
+template <std::size_t kTerms>
+Range polynomial_range(const std::array<double, kTerms>& c, Real u_lo, Real u_hi) {
+  static_assert(kTerms <= 4);
   const auto at = [&](Real u) {
-    return ((Real(c[3]) * u + Real(c[2])) * u + Real(c[1])) * u + Real(c[0]);
+    Real sum = 0;
+    for (std::size_t j = kTerms; j-- > 0;) sum = sum * u + Real(c[j]);
+    return sum;
   };
   Real lo = std::min(at(u_lo), at(u_hi)), hi = std::max(at(u_lo), at(u_hi));
   const auto consider = [&](Real u) {
     if (u > u_lo && u < u_hi) lo = std::min(lo, at(u)), hi = std::max(hi, at(u));
   };
-  // c1 + 2 c2 u + 3 c3 u^2 = 0.
-  const Real a = 3 * Real(c[3]), b = 2 * Real(c[2]), d = c[1];
+  // The slope c1 + 2 c2 u + 3 c3 u^2 = 0.
+  const Real a = kTerms > 3 ? 3 * Real(c[3]) : 0, b = kTerms > 2 ? 2 * Real(c[2]) : 0;
+  const Real d = kTerms > 1 ? Real(c[1]) : 0;
   if (a == 0) {
     if (b != 0) consider(-d / b);
   } else if (const Real discriminant = b * b - 4 * a * d; discriminant >= 0) {
@@ -69,95 +73,118 @@ const ScalarPiecesFitter::Cut& ScalarPiecesFitter::cut(int pieces) {
     if (existing.pieces == pieces) return existing;
   Cut cut;
   cut.pieces = pieces;
-  // x(t_cut) at least pieces, exactly as evaluate computes it: every t <= t_cut in the zero
-  // piece.
-  const double w_cut = 1.0 - double(t_cut_);
-  cut.pieces_per_w = pieces / w_cut;
-  while (w_cut * cut.pieces_per_w < pieces)
-    cut.pieces_per_w = std::nextafter(cut.pieces_per_w, INFINITY);
-  for (int i = 0; i < pieces; ++i) {
-    const std::vector<Real> chebyshev = chebyshev_coefficients(
-        [&](Real f) { return Real(value(double((i + f) / cut.pieces_per_w))); }, 0, 1, kNodes);
-    double dropped = 0, last = 0, total = 0;
-    for (int j = 0; j < kNodes; ++j) {
-      const double magnitude = double(std::fabs(chebyshev[j]));
-      total += magnitude;
-      if (j > 3) dropped += magnitude;
-      if (j >= kNodes - 4) last += magnitude;
-    }
-    cut.truncation_error.push_back(dropped + 4 * last + kValueNoise * total);
-    const std::vector<Real> monomials =
-        monomials_from_chebyshev(chebyshev, 3, 0, 1, local_center(i));
-    cut.monomials.push_back({monomials[0], monomials[1], monomials[2], monomials[3]});
-  }
+  cut.pieces_per_w = pieces / (1.0 - double(t_cut_));
+  for (int i = 0; i < pieces; ++i)
+    cut.chebyshev.push_back(chebyshev_coefficients(
+        [&](Real f) { return Real(value(double((i + f) / cut.pieces_per_w))); }, 0, 1, kNodes));
   for (int i = 0; i <= pieces; ++i) cut.ends.push_back(value(i / cut.pieces_per_w));
-  // x's two roundings move it by at most (pieces + 1) 2^-52: a t whose x reaches the zero
-  // piece has w above pieces / pieces_per_w (1 - 2^-50), where F is at most this.
-  cut.zero_piece_error =
-      std::max(0.0, value(pieces / cut.pieces_per_w * (1 - 0x1p-50)));
   cuts_.push_back(std::move(cut));
   return cuts_.back();
 }
 
-std::optional<ScalarPiecesFitter::Fitted> ScalarPiecesFitter::certify(
+template <class Pieces>
+std::optional<ScalarPiecesFitter::Fitted<Pieces>> ScalarPiecesFitter::certify(
     const Cut& cut, double scale, const CertifiedError& target, double& miss) const {
-  Fitted fitted;
-  fitted.pieces.t_cut = t_cut_;
-  fitted.pieces.pieces_per_w = cut.pieces_per_w;
-  fitted.pieces.table.assign(std::size_t(cut.pieces) + 1, {});
-  fitted.pieces.table.back().center = cut.pieces;  // the zero piece: its u is finite
+  using Type = std::remove_cvref_t<decltype(Pieces::pieces_per_w)>;
+  constexpr std::size_t kDegree = Pieces::degree;
+  constexpr bool kInDouble = std::is_same_v<Type, double>;
+  constexpr double kUnit = std::numeric_limits<Type>::epsilon() / 2;
+  // Horner's rule, kDegree multiplies and adds: gamma_2d = 2 d u / (1 - 2 d u).
+  constexpr double kHornerGamma = 2.0 * kDegree * kUnit / (1 - 2.0 * kDegree * kUnit);
+  const int count = cut.pieces;
+  const auto x_of = [](float t, Type pieces_per_w) {  // as evaluate computes it
+    return (Type(1) - Type(std::min(t, 1.0f))) * pieces_per_w;
+  };
+  Fitted<Pieces> fitted;
+  Pieces& pieces = fitted.pieces;
+  pieces.t_cut = t_cut_;
+  // Every t <= t_cut in the zero piece: x(t_cut) at least count, computed.
+  pieces.pieces_per_w = Type(cut.pieces_per_w);
+  while (x_of(t_cut_, pieces.pieces_per_w) < Type(count))
+    pieces.pieces_per_w = std::nextafter(pieces.pieces_per_w, Type(INFINITY));
+  // x against w cut.pieces_per_w: off by the table's pieces_per_w and two roundings (1 - t
+  // is exact from t = 1/2 up).
+  const double x_error =
+      (count + 1) * (std::fabs(double(pieces.pieces_per_w) / cut.pieces_per_w - 1) + 2.01 * kUnit);
+  pieces.table.assign(std::size_t(count) + 1, {});
+  pieces.table.back().center = Type(count);  // the zero piece: its u is finite
   const float scale_f = float(scale);
-  // A double below this rounds to at most scale_f.
+  // A computed value below this is at most scale_f as a float.
   const double ceiling =
-      double(scale_f) + 0.5 * (double(std::nextafter(scale_f, INFINITY)) - double(scale_f));
-  double abs_error = scale * cut.zero_piece_error, epicenter_ulp = 0;
+      kInDouble ? double(scale_f) + 0.5 * (double(std::nextafter(scale_f, INFINITY)) - scale_f)
+                : double(std::nextafter(scale_f, INFINITY));
+  // Near the cut, a t whose x reaches the zero piece: w above (count - x_error) / pieces_per_w.
+  double abs_error = scale * std::max(0.0, value((count - x_error) / cut.pieces_per_w));
+  double epicenter_ulp = 0;
   // The last piece's floats end at the float above t_cut: past it, between the cut-off and
   // t_cut, F continued is negative (k odd), and no float is there.
-  const double x_end = (1.0 - double(std::nextafter(t_cut_, 2.0f))) * cut.pieces_per_w;
-  const double last_f_end = std::clamp(x_end * (1 + 0x1p-51) - (cut.pieces - 1), 0.0, 1.0);
-  for (int i = 0; i < cut.pieces; ++i) {
+  const double last_f_end = std::clamp(
+      double(x_of(std::nextafter(t_cut_, 2.0f), pieces.pieces_per_w)) - (count - 1), 0.0, 1.0);
+  for (int i = 0; i < count; ++i) {
     const double u_lo = -local_center(i);
-    const double u_hi = (i == cut.pieces - 1 ? last_f_end : 1.0) + u_lo;
+    const double u_hi = (i == count - 1 ? last_f_end : 1.0) + u_lo;
     const double u_bound = std::max(-u_lo, u_hi);
-    Cubic c;
+    const std::vector<Real>& chebyshev = cut.chebyshev[std::size_t(i)];
+    double truncation = 0, last = 0, total = 0;
+    for (int j = 0; j < kNodes; ++j) {
+      const double term = double(std::fabs(chebyshev[std::size_t(j)]));
+      total += term;
+      if (j > int(kDegree)) truncation += term;
+      if (j >= kNodes - 4) last += term;
+    }
+    truncation += 4 * last + kValueNoise * total;
+    const std::vector<Real> monomials =
+        monomials_from_chebyshev(chebyshev, int(kDegree), 0, 1, local_center(i));
+    std::array<double, kDegree + 1> c;  // the table's, exactly
     double coefficient_error = 0;
-    for (int j = 0; j < 4; ++j) {
-      const Real exact = scale * cut.monomials[i][j];
-      c[j] = double(exact);
+    for (std::size_t j = 0; j <= kDegree; ++j) {
+      const Real exact = scale * monomials[j];
+      c[j] = double(Type(exact));
       coefficient_error += double(std::fabs(exact - Real(c[j])) + 0x1p-60L * std::fabs(exact)) *
-                           std::pow(u_bound, j);
+                           std::pow(u_bound, double(j));
     }
     if (i == 0) {  // the peak, t >= 1, exactly what the kernels return there: scale_f
-      coefficient_error += double(std::fabs(scale * cut.monomials[0][0] - Real(scale)));
-      c[0] = scale;
+      coefficient_error += double(std::fabs(scale * monomials[0] - Real(Type(scale))));
+      c[0] = double(Type(scale));
     }
     const auto horner = [&] { return kHornerGamma * magnitude(c, u_bound); };
-    // The range proof: the computed value within [0, ceiling), c[0] moved if it is not.
-    Range range = cubic_range(c, u_lo, u_hi);
+    // The range proof: the computed value within [0, ceiling), c[0] moved if it is not. At the
+    // peak, piece 0 (u >= 0): where the rest of Horner's rule, r(u) = c1 + c2 u + ..., is below
+    // 0 with its roundings, the computed u r(u) <= 0 and c0 + u r(u) rounds to at most
+    // c0 = scale: the peak is proven without the bound's slack.
+    const auto peak_proven = [&] {
+      if (i != 0) return false;
+      std::array<double, kDegree> rest;
+      for (std::size_t j = 0; j < kDegree; ++j) rest[j] = c[j + 1];
+      return polynomial_range(rest, 0, u_hi).hi + kHornerGamma * magnitude(rest, u_bound) < 0;
+    };
+    const auto within = [&](const Range& range) {
+      return range.lo - horner() >= 0 && (peak_proven() || range.hi + horner() < ceiling);
+    };
+    Range range = polynomial_range(c, u_lo, u_hi);
     const double before = c[0];
     if (range.lo - horner() < 0)
-      c[0] += (horner() - range.lo) * (1 + 0x1p-20) + 0x1p-1000;
-    else if (range.hi + horner() >= ceiling)
-      c[0] -= (range.hi + horner() - ceiling) * (1 + 0x1p-20) + 0x1p-20 * horner();
-    if (c[0] != before) {
-      range = cubic_range(c, u_lo, u_hi);
-      if (range.lo - horner() < 0 || range.hi + horner() >= ceiling) return std::nullopt;
-    }
+      c[0] = double(Type(c[0] + (horner() - range.lo) * (1 + 0x1p-20) +
+                         4 * kUnit * std::fabs(c[0]) + 0x1p-140));
+    else if (!within(range))
+      c[0] = double(Type(c[0] - (range.hi + horner() - ceiling) * (1 + 0x1p-20) -
+                         4 * kUnit * std::fabs(c[0])));
+    if (c[0] != before) range = polynomial_range(c, u_lo, u_hi);
+    if (!within(range)) return std::nullopt;
     const double moved = std::fabs(c[0] - before);
-    // u off by x's two roundings, (pieces + 1) 2^-52, and by u's own (x - center: exact but
-    // in piece 0), times the cubic's slope.
-    const double slope =
-        std::fabs(c[1]) + u_bound * (2 * std::fabs(c[2]) + 3 * u_bound * std::fabs(c[3]));
-    const double input = slope * ((cut.pieces + 1) * 0x1p-51 + 0x1p-53);
+    double slope = 0;  // |p'(u)| over the piece
+    for (std::size_t j = kDegree; j >= 1; --j) slope = slope * u_bound + double(j) * std::fabs(c[j]);
     const double unrounded =
-        scale * cut.truncation_error[i] + coefficient_error + moved + horner() + input;
-    const double error = unrounded + 0.5 * ulp_of_float(range.hi + horner());
+        scale * truncation + coefficient_error + moved + horner() + slope * x_error;
+    const double error = unrounded + (kInDouble ? 0.5 * ulp_of_float(range.hi + horner()) : 0.0);
     abs_error = std::max(abs_error, error);
     if (cut.ends[i] >= kEpicenter) {  // the piece starts in the epicenter
       const double lowest = scale * std::max(kEpicenter, cut.ends[i + 1]) * (1 - 0x1p-40);
       epicenter_ulp = std::max(epicenter_ulp, error / ulp_of_float(lowest));
     }
-    fitted.pieces.table[std::size_t(i)] = {c, i + local_center(i)};
+    auto& piece = pieces.table[std::size_t(i)];
+    for (std::size_t j = 0; j <= kDegree; ++j) piece.polynomial[j] = Type(c[j]);
+    piece.center = Type(i + local_center(i));
   }
   fitted.certified = {abs_error / scale, epicenter_ulp};
   // Every piece's, so that the next try's count is not underestimated from the first miss.
@@ -167,19 +194,25 @@ std::optional<ScalarPiecesFitter::Fitted> ScalarPiecesFitter::certify(
   return fitted;
 }
 
-std::optional<ScalarPiecesFitter::Fitted> ScalarPiecesFitter::fit(double scale,
-                                                                  const CertifiedError& target) {
+template <class Pieces>
+std::optional<ScalarPiecesFitter::Fitted<Pieces>> ScalarPiecesFitter::fit(
+    double scale, const CertifiedError& target) {
   int pieces = kMinPieces;
   while (pieces <= kMaxPieces) {
     double miss = INFINITY;
-    if (std::optional<Fitted> fitted = certify(cut(pieces), scale, target, miss)) return fitted;
-    // The cubic's error falls as pieces^-4: the counts that cannot meet the target are skipped
-    // (all of them past kMaxPieces, as where the zero piece alone misses).
-    const double needed = 1.3 * pieces * std::pow(miss, 0.25);
+    if (auto fitted = certify<Pieces>(cut(pieces), scale, target, miss)) return fitted;
+    // The error falls as pieces^-(degree + 1): the counts that cannot meet the target are
+    // skipped (all of them past kMaxPieces, as where the zero piece alone misses).
+    const double needed = 1.3 * pieces * std::pow(miss, 1.0 / double(Pieces::degree + 1));
     if (!(needed <= kMaxPieces)) return std::nullopt;
     pieces = std::max(2 * pieces, int(std::bit_ceil(unsigned(needed))));
   }
   return std::nullopt;
 }
+
+template std::optional<ScalarPiecesFitter::Fitted<ScalarPieces>>
+ScalarPiecesFitter::fit<ScalarPieces>(double, const CertifiedError&);
+template std::optional<ScalarPiecesFitter::Fitted<FastScalarPieces>>
+ScalarPiecesFitter::fit<FastScalarPieces>(double, const CertifiedError&);
 
 }  // namespace kutlog::detail

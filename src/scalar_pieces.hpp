@@ -1,17 +1,18 @@
-// The scalar path's pieces (kutlog/detail/lobe_kernel.hpp's ScalarPieces), for the setup of
-// src/lobe.cpp. On each piece of the support, the cubic truncation of scale F's Chebyshev
+// The scalar path's pieces (kutlog/detail/lobe_kernel.hpp's PiecewisePolynomial: cubics in
+// double for the precise variant, quadratics in float for the fast one), for the setup of
+// src/lobe.cpp. On each piece of the support, the truncation of scale F's Chebyshev
 // interpolant there, kept only when a bound on every error it can have, over every float t of
 // the piece, meets the variant's promise:
 //   approximation:  the dropped Chebyshev terms, and the aliasing the last ones tell;
-//   coefficients:   each rounded to double, and moved where the range proof needs it;
-//   Horner's rule:  gamma_6 sum |c_j u^j| (Higham), whether the caller's flags fuse or not;
-//   input:          x = (1 - t) pieces_per_w, two roundings of x in double, and u = x - center;
-//   output:         the rounding to float; near the cut, the zero piece's 0 against F there.
-// The range proof: the computed cubic within [0, scale_f] after its rounding to float, over
+//   coefficients:   each rounded to the table's type, and moved where the range proof needs it;
+//   Horner's rule:  gamma_2d sum |c_j u^j| (Higham), whether the caller's flags fuse or not;
+//   input:          x = (1 - t) pieces_per_w, its roundings times the polynomial's slope;
+//   output:         the rounding to float of the double table; near the cut, the zero piece's
+//                   0 against F there.
+// The range proof: the computed value within [0, scale_f] after any rounding to float, over
 // the whole piece, so that the evaluation needs no clamp.
 #pragma once
 
-#include <array>
 #include <optional>
 #include <vector>
 
@@ -23,32 +24,34 @@ namespace kutlog::detail {
 
 class ScalarPiecesFitter {
  public:
-  // More pieces fit closer, in a larger table (128 pieces are 8 KB) and a longer setup.
+  // More pieces fit closer, in a larger table (128 double cubics are 8 KB) and a longer setup.
   static constexpr int kMinPieces = 8, kMaxPieces = 128;
 
   ScalarPiecesFitter(const LobeShape& shape, float t_cut) : shape_(shape), t_cut_(t_cut) {}
 
+  template <class Pieces>
   struct Fitted {
-    ScalarPieces pieces;
+    Pieces pieces;
     CertifiedError certified;
   };
   // The fewest pieces (a power of two) whose bound meets the target, if any does.
-  std::optional<Fitted> fit(double scale, const CertifiedError& target);
+  template <class Pieces>
+  std::optional<Fitted<Pieces>> fit(double scale, const CertifiedError& target);
 
  private:
-  // The support in equal pieces, unscaled: each normalization scales it.
+  // The support in equal pieces, unscaled: each variant and normalization takes its terms.
   struct Cut {
     int pieces;
-    double pieces_per_w;
-    std::vector<std::array<Real, 4>> monomials;  // F on each piece, in u
-    std::vector<double> truncation_error;        // of each piece's cubic
-    std::vector<double> ends;                    // F at w = i / pieces_per_w, i <= pieces
-    double zero_piece_error;  // F at the lowest w whose x can reach the zero piece
+    double pieces_per_w;                        // exact, rounded by each table to its type
+    std::vector<std::vector<Real>> chebyshev;   // F on each piece, f = x - piece in [0, 1]
+    std::vector<double> ends;                   // F at w = i / pieces_per_w, i <= pieces
   };
   const Cut& cut(int pieces);
-  // The pieces and their bound if it meets the target; else how far the worst piece missed.
-  std::optional<Fitted> certify(const Cut& cut, double scale, const CertifiedError& target,
-                                double& miss) const;
+  // The table and its bound if it meets the target; else how far it missed (infinite: no
+  // count of pieces can meet it).
+  template <class Pieces>
+  std::optional<Fitted<Pieces>> certify(const Cut& cut, double scale,
+                                        const CertifiedError& target, double& miss) const;
   double value(double w) const;  // F, continued a little past the cut-off
 
   LobeShape shape_;

@@ -88,8 +88,10 @@ TEST(LobeScalar, TCutIsTheLastFloatEveryPathZeroes) {
     for (Variant variant : tools::kLobeVariants)
       for (Normalization normalization : tools::kLobeNormalizations) {
         EXPECT_EQ(lobe.kernel(variant, normalization, Arithmetic::scalar).t_cut, lobe.t_cut());
-        if (!lobe.scalar_pieces(variant, normalization).table.empty())
-          EXPECT_EQ(lobe.scalar_pieces(variant, normalization).t_cut, lobe.t_cut());
+        if (!lobe.precise_pieces(normalization).table.empty())
+          EXPECT_EQ(lobe.precise_pieces(normalization).t_cut, lobe.t_cut());
+        if (!lobe.fast_pieces(normalization).table.empty())
+          EXPECT_EQ(lobe.fast_pieces(normalization).t_cut, lobe.t_cut());
         lobe.eval(t.data(), out.data(), t.size(), variant, normalization);
         for (std::size_t i = 0; i < t.size(); ++i) {
           EXPECT_EQ(lobe.eval(t[i], variant, normalization), 0.0f) << "t = " << t[i];
@@ -99,7 +101,7 @@ TEST(LobeScalar, TCutIsTheLastFloatEveryPathZeroes) {
   }
 }
 
-// The pieces, the scalar path's fast form, where materials usually are: every grid lobe with
+// The pieces, the scalar path's faster form, where materials usually are: every grid lobe with
 // n >= 10 and k <= 5, each variant and normalization. Elsewhere the setup may fall back to the
 // kernel of Arithmetic::scalar (a lobe cut at the horizon, whose floats just above t = 0 would
 // reach the zero piece); the sweeps above cover both.
@@ -108,14 +110,16 @@ TEST(LobeScalar, PiecesOnTheUsualMaterials) {
     for (int k = 1; k <= 5; ++k)
       for (double Q : {0.1, 0.5, 0.9}) {
         const Lobe lobe(n, k, Q);
-        for (Variant variant : tools::kLobeVariants)
-          for (Normalization normalization : tools::kLobeNormalizations)
-            EXPECT_FALSE(lobe.scalar_pieces(variant, normalization).table.empty())
-                << "n = " << n << ", k = " << k << ", Q = " << Q;
+        for (Normalization normalization : tools::kLobeNormalizations) {
+          EXPECT_FALSE(lobe.precise_pieces(normalization).table.empty())
+              << "n = " << n << ", k = " << k << ", Q = " << Q;
+          EXPECT_FALSE(lobe.fast_pieces(normalization).table.empty())
+              << "n = " << n << ", k = " << k << ", Q = " << Q;
+        }
       }
   const Lobe horizon(1.5, 3, 0.5);
   EXPECT_EQ(horizon.t_cut(), 0.0f);
-  EXPECT_TRUE(horizon.scalar_pieces(Variant::precise, Normalization::none).table.empty());
+  EXPECT_TRUE(horizon.precise_pieces(Normalization::none).table.empty());
 }
 
 // Every float of each support on the grid (sampled below the cut), and random lobes densely

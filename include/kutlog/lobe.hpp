@@ -54,9 +54,14 @@ class Lobe {
   [[gnu::always_inline]] float eval(float t, Variant variant = Variant::precise,
                                     Normalization normalization = Normalization::none) const
       noexcept {
-    const ScalarPieces& pieces = scalar_pieces(variant, normalization);
-    if (pieces.table.empty()) [[unlikely]] return eval_by_kernel(t, variant, normalization);
-    return pieces.evaluate(t);
+    if (variant == Variant::fast) {
+      const FastScalarPieces& pieces = fast_pieces(normalization);
+      if (!pieces.table.empty()) [[likely]] return pieces.evaluate(t);
+    } else {
+      const ScalarPieces& pieces = precise_pieces(normalization);
+      if (!pieces.table.empty()) [[likely]] return pieces.evaluate(t);
+    }
+    return eval_by_kernel(t, variant, normalization);
   }
   // Floats only: a double t would be rounded without a word.
   template <class T>
@@ -88,10 +93,13 @@ class Lobe {
                                        Arithmetic arithmetic) const {
     return certificates_[kernel_index(variant, normalization, arithmetic)];
   }
-  // The scalar eval's pieces; empty where it runs the kernel of Arithmetic::scalar, which is
-  // fitted only then.
-  const ScalarPieces& scalar_pieces(Variant variant, Normalization normalization) const {
-    return scalar_pieces_[int(variant) * 2 + int(normalization)];
+  // The scalar eval's pieces of each variant; empty where it runs the kernel of
+  // Arithmetic::scalar, which is fitted only then.
+  const ScalarPieces& precise_pieces(Normalization normalization) const {
+    return precise_pieces_[int(normalization)];
+  }
+  const FastScalarPieces& fast_pieces(Normalization normalization) const {
+    return fast_pieces_[int(normalization)];
   }
 
  private:
@@ -107,7 +115,8 @@ class Lobe {
                                     Arithmetic arithmetic) {
     return (int(variant) * 2 + int(normalization)) * 3 + int(arithmetic);
   }
-  ScalarPieces scalar_pieces_[2 * 2];  // by variant and normalization
+  ScalarPieces precise_pieces_[2];  // by normalization
+  FastScalarPieces fast_pieces_[2];
   LobeKernel kernels_[2 * 2 * 3];
   KernelCertificate certificates_[2 * 2 * 3];
   // Each kernel's slot in detail::LobeArrayKernels, computed at setup.

@@ -129,30 +129,42 @@ struct LobeKernel {
 };
 
 // The scalar path where its setup certifies it (src/scalar_pieces.hpp): the support
-// w = 1 - t in [0, 1 - t_cut] cut into equal pieces, scale F a cubic on each, in double. No
-// branch on t and no clamp: the setup proves every cubic, its roundings counted, within
-// [0, scale_f]. From t_cut down, x falls in the last piece, whose cubic is 0.
-struct ScalarPieces {
-  // A cubic in powers of u = x - center, lowest first; the center is loaded with it, where
-  // converting the piece's index back to double would take longer. One cache line.
-  struct alignas(64) Piece {
-    std::array<double, 4> cubic;
-    double center;
+// w = 1 - t in [0, 1 - t_cut] cut into equal pieces, scale F a polynomial on each. No branch
+// on t and no clamp: the setup proves every polynomial, its roundings counted, within
+// [0, scale_f]. From t_cut down, x falls in the last piece, whose polynomial is 0.
+template <class Real, std::size_t kDegree>
+struct PiecewisePolynomial {
+  static constexpr std::size_t degree = kDegree;
+  // A polynomial in powers of u = x - center, lowest first; the center is loaded with it, where
+  // converting the piece's index back would take longer. A power of two in size: no piece
+  // straddles a cache line.
+  struct alignas(std::bit_ceil(sizeof(Real) * (kDegree + 2))) Piece {
+    std::array<Real, kDegree + 1> polynomial;
+    Real center;
   };
   float t_cut = 0;
-  double pieces_per_w = 0;   // x = w pieces_per_w, in the piece floor(x)
+  Real pieces_per_w = 0;     // x = w pieces_per_w, in the piece floor(x)
   std::vector<Piece> table;  // empty where the setup could not certify it
 
   [[gnu::always_inline]] float evaluate(float t) const noexcept {
     if (t != t) return t;  // NaN, whose x has no piece
-    const double x = (1.0 - double(std::min(std::max(t, t_cut), 1.0f))) * pieces_per_w;
+    const Real x = (Real(1) - Real(std::min(std::max(t, t_cut), 1.0f))) * pieces_per_w;
     // At most the zero piece: the setup puts x(t_cut) below its index + 1.
     const Piece& piece = table[std::size_t(std::int64_t(x))];
-    const double u = x - piece.center;
-    const std::array<double, 4>& c = piece.cubic;
-    return float(((c[3] * u + c[2]) * u + c[1]) * u + c[0]);
+    return float(horner(piece.polynomial, x - piece.center));
+  }
+
+ private:
+  template <std::size_t kFrom = 0>
+  [[gnu::always_inline]] static Real horner(const std::array<Real, kDegree + 1>& c, Real u) {
+    if constexpr (kFrom == kDegree) return c[kFrom];
+    else return horner<kFrom + 1>(c, u) * u + c[kFrom];
   }
 };
+// Precise: cubics in double, x too (in float its rounding alone would reach 2^-22 of the
+// peak), rounded once to float. Fast: quadratics in float, x too, about a third faster.
+using ScalarPieces = PiecewisePolynomial<double, 3>;
+using FastScalarPieces = PiecewisePolynomial<float, 2>;
 
 // PerLaneLobe's: c^2 = n H(1/n - y_center), coef = n K(.), acos(t)^2 = w G(w), v = c^2 acos(t)^2
 // and F = (1 - v R(v - v_center))^k.
