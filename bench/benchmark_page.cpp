@@ -65,7 +65,9 @@ std::string_view explanation(RatioKind kind) {
              "along scanlines of 64 fragments across the highlight, the angle falling to a random\n"
              "minimum and rising again, as a rasterizer meets them. `scalar_kutlog_cut`: the\n"
              "precise `eval` behind the caller's own branch on `lobe.t_cut()`, as a rasterizer\n"
-             "would write it. `/ it` is the row's speed over the peer's. The benchmark is\n"
+             "would write it. `_perlane`: a gloss map's, `PerLaneLobe::eval(t, n)` with each\n"
+             "fragment's n log-uniform in [n / 2, 2 n], against `powf` at that n (its `powf / it`\n"
+             "column). `/ it` is the row's speed over the peer's. The benchmark is\n"
              "compiled with the compiler's default flags; the rows `-march=native` are the same\n"
              "loops of kutlog's inline `eval(t)` compiled for this machine.\n";
     case RatioKind::span:

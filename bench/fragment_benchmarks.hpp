@@ -1,4 +1,4 @@
-// The per-fragment benchmarks: one scalar call per fragment, named
+// The per-fragment benchmarks: one scalar call per fragment (a gloss map's too: _perlane), named
 // fragment/<function>/n:<n>/k:<k>[/inputs:<count>][/inside|/raster][/flags:<flags>], registered
 // by bench/main.cpp at the compiler's default flags with every peer, and by
 // bench/fragment_native.cpp, compiled with -march=native, for kutlog's eval(t) alone: it is
@@ -43,6 +43,19 @@ void scalar_unary(benchmark::State& state, Function function, const std::vector<
   state.SetItemsProcessed(state.iterations() * std::int64_t(inputs.size()));
 }
 
+// out[i] = function(x[i], y[i]), the same way.
+template <class Function>
+void scalar_binary(benchmark::State& state, Function function, const std::vector<float>& x,
+                   const std::vector<float>& y) {
+  std::vector<float> out(x.size());
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < x.size(); ++i) out[i] = function(x[i], y[i]);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * std::int64_t(x.size()));
+}
+
 template <class Function>
 void register_scalar_unary(const std::string& name, Function function, std::vector<float> x) {
   benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& state) {
@@ -73,6 +86,22 @@ void register_fragment_benchmarks(const std::string& flags) {
         register_scalar_unary("fragment/scalar_kutlog_fast" + at,
                               [lobe](float t) { return lobe->eval(t, Variant::fast); }, cosines);
         if (!flags.empty()) continue;
+        // A gloss map: each fragment's n log-uniform in [n / 2, 2 n], against powf at that n.
+        const auto per_lane = std::make_shared<const PerLaneLobe>(n / 2.0, 2.0 * n, k, kLobeAnchor);
+        std::vector<float> exponents = uniform_inputs(-1, 1, 5, count);
+        for (float& e : exponents) e = float(n) * std::exp2(e);
+        const auto register_binary = [&](const std::string& name, auto function) {
+          benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& state) {
+            scalar_binary(state, function, cosines, exponents);
+          });
+        };
+        register_binary("fragment/scalar_kutlog_perlane" + at,
+                        [per_lane](float t, float e) { return per_lane->eval(t, e); });
+        register_binary("fragment/scalar_kutlog_perlane_fast" + at, [per_lane](float t, float e) {
+          return per_lane->eval(t, e, Variant::fast);
+        });
+        register_binary("fragment/scalar_powf_perlane" + at,
+                        [](float t, float e) { return powf(std::max(t, 0.0f), e); });
         register_scalar_unary(
             "fragment/scalar_kutlog_cut" + at,
             [lobe, t_cut = lobe->t_cut()](float t) { return t <= t_cut ? 0.0f : lobe->eval(t); },

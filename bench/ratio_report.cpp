@@ -161,6 +161,17 @@ std::optional<tools::Table> RatioCollector::fragment_ratios() const {
             table.add_row({name, std::to_string(n), inputs, std::to_string(k),
                            fmt::format("{:.2f}", 1e9 / rate_of), times(rate_of / powf),
                            times(rate_of / pow_double)});
+        // A gloss map's: against powf at each fragment's own n.
+        const double powf_per_lane = rate("fragment/scalar_powf_perlane" + at);
+        for (const char* name : {"scalar_kutlog_perlane", "scalar_kutlog_perlane_fast"})
+          if (const double rate_of = rate(std::string("fragment/") + name + at);
+              rate_of > 0 && powf_per_lane > 0)
+            table.add_row({name, std::to_string(n), inputs, std::to_string(k),
+                           fmt::format("{:.2f}", 1e9 / rate_of), times(rate_of / powf_per_lane),
+                           ""});
+        if (powf_per_lane > 0)
+          table.add_row({"scalar_powf_perlane", std::to_string(n), inputs, std::to_string(k),
+                         fmt::format("{:.2f}", 1e9 / powf_per_lane), "1.00x", ""});
       }
   return any ? std::optional(std::move(table)) : std::nullopt;
 }
