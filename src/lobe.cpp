@@ -295,10 +295,10 @@ std::optional<CertifiedKernel> fit_base_power(LobeKernel kernel, QuotientSeries&
 }
 
 // The kernel for one variant and one arithmetic: in SIMD lanes the polynomial form if it
-// meets the target (float lanes, fastest), else base_power (double lanes); in the scalar
-// path (where its pieces were not certified) the polynomial form in float if its bound meets the target (the fast variant, mostly:
-// a third faster than in double, n = 1000), else both forms in double, whichever takes fewer
-// operations.
+// meets the target (float lanes, fastest), else base_power (double lanes); in the scalar path
+// (where its pieces were not certified) the polynomial form in float if its bound meets the
+// target (the fast variant, mostly: a third faster than in double, n = 1000), else both forms
+// in double, whichever takes fewer operations.
 CertifiedKernel fit_kernel(const ref::KutlogLobe& reference, float t_cut,
                       const detail::LobeShape& shape, QuotientSeries& polynomial_series,
                       const std::function<QuotientSeries&()>& base_series, double w_max,

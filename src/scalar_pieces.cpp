@@ -173,7 +173,8 @@ std::optional<ScalarPiecesFitter::Fitted<Pieces>> ScalarPiecesFitter::certify(
     if (!within(range)) return std::nullopt;
     const double moved = std::fabs(c[0] - before);
     double slope = 0;  // |p'(u)| over the piece
-    for (std::size_t j = kDegree; j >= 1; --j) slope = slope * u_bound + double(j) * std::fabs(c[j]);
+    for (std::size_t j = kDegree; j >= 1; --j)
+      slope = slope * u_bound + double(j) * std::fabs(c[j]);
     const double unrounded =
         scale * truncation + coefficient_error + moved + horner() + slope * x_error;
     const double error = unrounded + (kInDouble ? 0.5 * ulp_of_float(range.hi + horner()) : 0.0);
