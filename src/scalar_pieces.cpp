@@ -68,9 +68,18 @@ double ScalarPiecesFitter::value(double w) const {
   return integer_power(shape_.base(w), shape_.k);  // past the cut, the base's sign k times
 }
 
-const ScalarPiecesFitter::Cut& ScalarPiecesFitter::cut(int pieces) {
-  for (const Cut& existing : cuts_)
-    if (existing.pieces == pieces) return existing;
+const ScalarPiecesFitter::Cut& ScalarPiecesFitter::cut(int pieces, std::size_t degree) {
+  auto existing = std::find_if(cuts_.begin(), cuts_.end(),
+                               [&](const Cut& c) { return c.pieces == pieces; });
+  if (existing == cuts_.end()) existing = cuts_.insert(cuts_.end(), new_cut(pieces));
+  std::vector<std::vector<Real>>& monomials = existing->monomials[degree];
+  for (int i = int(monomials.size()); i < pieces; ++i)
+    monomials.push_back(monomials_from_chebyshev(existing->chebyshev[std::size_t(i)],
+                                                 int(degree), 0, 1, local_center(i)));
+  return *existing;
+}
+
+ScalarPiecesFitter::Cut ScalarPiecesFitter::new_cut(int pieces) const {
   Cut cut;
   cut.pieces = pieces;
   cut.pieces_per_w = pieces / (1.0 - double(t_cut_));
@@ -78,8 +87,7 @@ const ScalarPiecesFitter::Cut& ScalarPiecesFitter::cut(int pieces) {
     cut.chebyshev.push_back(chebyshev_coefficients(
         [&](Real f) { return Real(value(double((i + f) / cut.pieces_per_w))); }, 0, 1, kNodes));
   for (int i = 0; i <= pieces; ++i) cut.ends.push_back(value(i / cut.pieces_per_w));
-  cuts_.push_back(std::move(cut));
-  return cuts_.back();
+  return cut;
 }
 
 template <class Pieces>
@@ -133,8 +141,7 @@ std::optional<ScalarPiecesFitter::Fitted<Pieces>> ScalarPiecesFitter::certify(
       if (j >= kNodes - 4) last += term;
     }
     truncation += 4 * last + kValueNoise * total;
-    const std::vector<Real> monomials =
-        monomials_from_chebyshev(chebyshev, int(kDegree), 0, 1, local_center(i));
+    const std::vector<Real>& monomials = cut.monomials[kDegree][std::size_t(i)];
     std::array<double, kDegree + 1> c;  // the table's, exactly
     double coefficient_error = 0;
     for (std::size_t j = 0; j <= kDegree; ++j) {
@@ -201,7 +208,8 @@ std::optional<ScalarPiecesFitter::Fitted<Pieces>> ScalarPiecesFitter::fit(
   int pieces = kMinPieces;
   while (pieces <= kMaxPieces) {
     double miss = INFINITY;
-    if (auto fitted = certify<Pieces>(cut(pieces), scale, target, miss)) return fitted;
+    if (auto fitted = certify<Pieces>(cut(pieces, Pieces::degree), scale, target, miss))
+      return fitted;
     // The error falls as pieces^-(degree + 1): the counts that cannot meet the target are
     // skipped (all of them past kMaxPieces, as where the zero piece alone misses).
     const double needed = 1.3 * pieces * std::pow(miss, 1.0 / double(Pieces::degree + 1));

@@ -13,6 +13,8 @@
 // the whole piece, so that the evaluation needs no clamp.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <optional>
 #include <vector>
 
@@ -45,13 +47,18 @@ class ScalarPiecesFitter {
     double pieces_per_w;                        // exact, rounded by each table to its type
     std::vector<std::vector<Real>> chebyshev;   // F on each piece, f = x - piece in [0, 1]
     std::vector<double> ends;                   // F at w = i / pieces_per_w, i <= pieces
+    // Each piece's truncation to a degree as monomials, by degree, when first asked for (both
+    // normalizations scale the same ones).
+    std::array<std::vector<std::vector<Real>>, 4> monomials;
   };
-  const Cut& cut(int pieces);
+  // The cut with its monomials of that degree.
+  const Cut& cut(int pieces, std::size_t degree);
   // The table and its bound if it meets the target; else how far it missed (infinite: no
   // count of pieces can meet it).
   template <class Pieces>
   std::optional<Fitted<Pieces>> certify(const Cut& cut, double scale,
                                         const CertifiedError& target, double& miss) const;
+  Cut new_cut(int pieces) const;
   double value(double w) const;  // F, continued a little past the cut-off
 
   LobeShape shape_;
