@@ -16,8 +16,9 @@ namespace kutlog {
 enum class Variant : std::uint8_t { precise, fast };
 enum class Normalization : std::uint8_t { none, exact_coef };
 
-// SIMD lanes with or without FMA, or scalar (Lobe::eval(float t)): a cubic per piece in double,
-// or where those are not certified, a kernel in double or in float, bounded for any fusing.
+// SIMD lanes with or without FMA, or scalar (Lobe::eval(float t)): the certified pieces
+// (precise cubics in double, fast quadratics in float), or where those are not certified, a
+// kernel in double or in float; each bounded for any fusing.
 enum class Arithmetic : std::uint8_t { unfused, fused, scalar };
 
 // The error bound the setup certified for one kernel, in the contract's units.
@@ -80,7 +81,9 @@ class Lobe {
     loops->by_slot[array_slots_[index]](kernels_[index], t, out, count);
   }
 
-  // The kernel fitted for that arithmetic, for users of kutlog/simd/lobe.hpp.
+  // The kernel fitted for that arithmetic, for users of kutlog/simd/lobe.hpp. The one of
+  // Arithmetic::scalar is fitted only where that variant's pieces are empty; elsewhere only
+  // its t_cut is set.
   const LobeKernel& kernel(Variant variant, Normalization normalization,
                            bool fused_fma) const noexcept {
     return kernel(variant, normalization, fused_fma ? Arithmetic::fused : Arithmetic::unfused);

@@ -35,7 +35,8 @@ struct LobeKernel {
   bool compensated = false;
   // Whether the output is clamped to [0, scale_f]; dropped where the setup proves it needless.
   bool clamped = true;
-  // The scalar path: in float on q_f where its bound allows (fast, mostly), else in double.
+  // The scalar path where its pieces are not certified: in float on q_f where its bound
+  // allows, else in double.
   bool scalar_in_float = false;
   double scale_d = 1;
   // center_t for the scalar path in double: the float would be converted on every call, as it
