@@ -108,8 +108,8 @@ FloatFit fit_base(double target, int degree) {
   return *r;
 }
 const FloatFit& base_fit(Variant variant) {
-  static const FloatFit precise = fit_base(kPreciseTarget, PerLaneKernel::base_degree(false)),
-                        fast = fit_base(kFastTarget, PerLaneKernel::base_degree(true));
+  static const FloatFit precise = fit_base(kPreciseTarget, PerLaneKernel::kPreciseBaseDegree),
+                        fast = fit_base(kFastTarget, PerLaneKernel::kFastBaseDegree);
   return variant == Variant::fast ? fast : precise;
 }
 
@@ -186,7 +186,9 @@ PerLaneLobe::PerLaneLobe(double n_min, double n_max, int k, double Q) : k_(k), Q
     of_variant.g = g.coefficients;
     of_variant.r_degree = base_fit(variant).degree;
     of_variant.r = base_fit(variant).coefficients;
-    of_variant.power_in_float = variant == Variant::fast;
+    // At k = 1 there is no power: the base in float, one fused multiply-add, is rounded once
+    // as in double (FMA archs; SSE4.1 adds its product's rounding, within the bound).
+    of_variant.power_in_float = variant == Variant::fast || k == 1;
     const double margin = variant == Variant::fast ? kFastCutMargin : kPreciseCutMargin;
     of_variant.v_cut = float(double(kVCut) * (1 - margin));
   }

@@ -40,11 +40,13 @@ KernelTable make_kernel_table() {
   static_cast<LobeArrayKernels&>(table) = lobe_array_kernels<Arch>();
   table.kutlog_per_lane = [](const PerLaneKernel& kernel, bool normalized, const float* t,
                              const float* n, float* out, std::size_t count) {
-    if (kernel.power_in_float)
-      return map_arrays<Arch, 2>(simd::PreparedPerLaneLobe<Arch, true>(kernel, normalized),
-                                 {t, n}, out, count, 1.0f);
-    map_arrays<Arch, 2>(simd::PreparedPerLaneLobe<Arch>(kernel, normalized), {t, n}, out, count,
-                        1.0f);
+    const auto run = [&](const auto& lobe) { map_arrays<Arch, 2>(lobe, {t, n}, out, count, 1.0f); };
+    using simd::PreparedPerLaneLobe;
+    constexpr int kFastDegree = PerLaneKernel::kFastBaseDegree;
+    if (kernel.r_degree == kFastDegree)
+      return run(PreparedPerLaneLobe<Arch, true, kFastDegree>(kernel, normalized));
+    if (kernel.power_in_float) return run(PreparedPerLaneLobe<Arch, true>(kernel, normalized));
+    run(PreparedPerLaneLobe<Arch>(kernel, normalized));
   };
   table.blinn_phong_xsimd = [](const float* t, float n, float scale, float* out, std::size_t count) {
     const F exponent(n), factor(scale);

@@ -174,10 +174,11 @@ struct PerLaneKernel {
   using Coefficients = std::array<float, kMaxDegree + 1>;
   float n_min = 1, n_max = 1, y_center = 0, v_center = 0, v_cut = 0, t_guard = 0;
   int k = 1, h_degree = 0, k_degree = 0, g_degree = 0, r_degree = 0;
-  // The SIMD power in float lanes (fast: G and R fitted for it), else in double lanes.
+  // The SIMD power in float lanes (fast; precise where its rounding, k-fold, meets the
+  // bounds), else in double lanes.
   bool power_in_float = false;
-  // R's degree: R is the same for every material, so the SIMD kernels unroll it.
-  static constexpr int base_degree(bool power_in_float) { return power_in_float ? 3 : 4; }
+  // R's degree by variant: R is the same for every material, so the SIMD kernels unroll it.
+  static constexpr int kPreciseBaseDegree = 4, kFastBaseDegree = 3;
   Coefficients h{}, coef_k{}, g{}, r{};
 
   // The SIMD kernel's formulas in double, rounded once.

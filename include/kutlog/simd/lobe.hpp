@@ -131,9 +131,10 @@ class PreparedLobe {
 };
 
 // A PerLaneKernel with its constants broadcast once: F(t; n) per lane (kutlog/lobe.hpp).
-// kPowerInFloat must equal the kernel's power_in_float (PerLaneLobe's fast variant) or be
-// false (the power then in double lanes, slower and within the precise bound).
-template <class Arch, bool kPowerInFloat = false>
+// kPowerInFloat must equal the kernel's power_in_float or be false (the power then in double
+// lanes, slower and within the precise bound); kBaseDegree must be the kernel's r_degree.
+template <class Arch, bool kPowerInFloat = false,
+          int kBaseDegree = PerLaneKernel::kPreciseBaseDegree>
 class PreparedPerLaneLobe {
  public:
   using F = floats<Arch>;
@@ -155,7 +156,6 @@ class PreparedPerLaneLobe {
     const F w = F(1.0f) - xsimd::min(F(1.0f), t);
     const F v = c_squared * (w * horner(w, g_, kernel_.g_degree));
     const F base_offset = v - F(kernel_.v_center);
-    constexpr int kBaseDegree = PerLaneKernel::base_degree(kPowerInFloat);
     F r = r_[kBaseDegree];
     for (int i = kBaseDegree; i-- > 0;) r = mul_add(r, base_offset, r_[std::size_t(i)]);
     F value;
