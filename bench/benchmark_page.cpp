@@ -67,7 +67,9 @@ std::string_view explanation(RatioKind kind) {
              "precise `eval` behind the caller's own branch on `lobe.t_cut()`, as a rasterizer\n"
              "would write it. `_perlane`: a gloss map's, `PerLaneLobe::eval(t, n)` with each\n"
              "fragment's n log-uniform in [n / 2, 2 n], against `powf` at that n (its `powf / it`\n"
-             "column). `/ it` is the row's speed over the peer's. The benchmark is\n"
+             "column); `_levels`: the same n rounded to a gloss map's 8-bit levels, one `Lobe` per\n"
+             "level (256 over [n / 2, 2 n]), each fragment's level at random, against `powf` at the\n"
+             "level's n. `/ it` is the row's speed over the peer's. The benchmark is\n"
              "compiled with the compiler's default flags; the rows `-march=native` are the same\n"
              "loops of kutlog's inline `eval(t)` compiled for this machine.\n";
     case RatioKind::span:

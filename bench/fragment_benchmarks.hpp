@@ -8,11 +8,14 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "inputs.hpp"
@@ -44,9 +47,9 @@ void scalar_unary(benchmark::State& state, Function function, const std::vector<
 }
 
 // out[i] = function(x[i], y[i]), the same way.
-template <class Function>
+template <class Function, class Second>
 void scalar_binary(benchmark::State& state, Function function, const std::vector<float>& x,
-                   const std::vector<float>& y) {
+                   const std::vector<Second>& y) {
   std::vector<float> out(x.size());
   for (auto _ : state) {
     for (std::size_t i = 0; i < x.size(); ++i) out[i] = function(x[i], y[i]);
@@ -70,9 +73,17 @@ void register_scalar_unary(const std::string& name, Function function, std::vect
 // directions would. /inside: every t inside the lobe, where a path tracer evaluates the
 // direction it sampled; /raster: a rasterizer's order, t rising and falling along scanlines
 // across the highlight. scalar_kutlog_cut: the caller's own branch on t_cut() before eval.
+// _perlane: a gloss map's n per fragment, log-uniform in [n / 2, 2 n]; _levels: the same n
+// quantized to a gloss map's 8-bit levels, one Lobe per level.
 // flags: "" at this build's flags, with the peers; else the name of the flags this file was
 // compiled with, kutlog's rows only.
 void register_fragment_benchmarks(const std::string& flags) {
+  constexpr int kGlossLevels = 256;
+  // Each (n, k)'s Lobes per level, built once for its data sets.
+  std::map<std::pair<int, int>, std::shared_ptr<const std::vector<Lobe>>> levels_of;
+  const auto level_exponent = [](int n, int level) {
+    return float(n * std::exp2(2.0 * level / (kGlossLevels - 1) - 1));
+  };
   for (int n : kFragmentExponents)
     for (const auto& [count, order] : kFragmentDataSets)
       for (int k : {3, 5}) {
@@ -102,6 +113,33 @@ void register_fragment_benchmarks(const std::string& flags) {
         });
         register_binary("fragment/scalar_powf_perlane" + at,
                         [](float t, float e) { return powf(std::max(t, 0.0f), e); });
+        std::shared_ptr<const std::vector<Lobe>>& level_lobes = levels_of[{n, k}];
+        if (!level_lobes) {
+          auto lobes = std::make_shared<std::vector<Lobe>>();
+          lobes->reserve(kGlossLevels);
+          for (int level = 0; level < kGlossLevels; ++level)
+            lobes->emplace_back(level_exponent(n, level), k, kLobeAnchor);
+          level_lobes = std::move(lobes);
+        }
+        std::vector<std::uint8_t> levels(count);
+        for (std::size_t i = 0; i < count; ++i)  // the nearest level to the per-lane rows' n
+          levels[i] = std::uint8_t(std::clamp<long>(
+              std::lround((std::log2(exponents[i] / n) + 1) * (kGlossLevels - 1) / 2), 0,
+              kGlossLevels - 1));
+        std::array<float, kGlossLevels> level_exponents;
+        for (int level = 0; level < kGlossLevels; ++level)
+          level_exponents[std::size_t(level)] = level_exponent(n, level);
+        benchmark::RegisterBenchmark(("fragment/scalar_kutlog_levels" + at).c_str(),
+                                     [=, lobes = level_lobes](benchmark::State& state) {
+          scalar_binary(state, [&](float t, std::uint8_t level) { return (*lobes)[level].eval(t); },
+                        cosines, levels);
+        });
+        benchmark::RegisterBenchmark(("fragment/scalar_powf_levels" + at).c_str(),
+                                     [=](benchmark::State& state) {
+          scalar_binary(state, [&](float t, std::uint8_t level) {
+            return powf(std::max(t, 0.0f), level_exponents[level]);
+          }, cosines, levels);
+        });
         register_scalar_unary(
             "fragment/scalar_kutlog_cut" + at,
             [lobe, t_cut = lobe->t_cut()](float t) { return t <= t_cut ? 0.0f : lobe->eval(t); },

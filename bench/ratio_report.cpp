@@ -161,17 +161,19 @@ std::optional<tools::Table> RatioCollector::fragment_ratios() const {
             table.add_row({name, std::to_string(n), inputs, std::to_string(k),
                            fmt::format("{:.2f}", 1e9 / rate_of), times(rate_of / powf),
                            times(rate_of / pow_double)});
-        // A gloss map's: against powf at each fragment's own n.
-        const double powf_per_lane = rate("fragment/scalar_powf_perlane" + at);
-        for (const char* name : {"scalar_kutlog_perlane", "scalar_kutlog_perlane_fast"})
-          if (const double rate_of = rate(std::string("fragment/") + name + at);
-              rate_of > 0 && powf_per_lane > 0)
-            table.add_row({name, std::to_string(n), inputs, std::to_string(k),
-                           fmt::format("{:.2f}", 1e9 / rate_of), times(rate_of / powf_per_lane),
-                           ""});
-        if (powf_per_lane > 0)
-          table.add_row({"scalar_powf_perlane", std::to_string(n), inputs, std::to_string(k),
-                         fmt::format("{:.2f}", 1e9 / powf_per_lane), "1.00x", ""});
+        // A gloss map's, n per fragment or per 8-bit level: against powf at that n.
+        const std::vector<std::vector<std::string>> gloss_rows = {
+            {"scalar_kutlog_perlane", "scalar_kutlog_perlane_fast", "scalar_powf_perlane"},
+            {"scalar_kutlog_levels", "scalar_powf_levels"}};  // the peer last
+        for (const std::vector<std::string>& rows : gloss_rows) {
+          const double peer_rate = rate("fragment/" + rows.back() + at);
+          if (peer_rate == 0) continue;  // absent from runs before them: the levels rows
+          for (const std::string& name : rows)
+            if (const double rate_of = rate("fragment/" + name + at); rate_of > 0)
+              table.add_row({name, std::to_string(n), inputs, std::to_string(k),
+                             fmt::format("{:.2f}", 1e9 / rate_of), times(rate_of / peer_rate),
+                             ""});
+        }
       }
   return any ? std::optional(std::move(table)) : std::nullopt;
 }
