@@ -11,7 +11,6 @@
 namespace kutlog::detail {
 namespace {
 
-constexpr double kDoubleUnit = 0x1p-53;
 // Floats a chunk: t and the kernel's outputs, 32 KiB.
 constexpr long kChunk = 4096;
 

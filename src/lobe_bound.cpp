@@ -5,61 +5,17 @@
 #include <bit>
 #include <cmath>
 #include <numbers>
+#include <span>
 
 namespace kutlog::detail {
 namespace {
 
-constexpr double kFloatUnit = 0x1p-24, kDoubleUnit = 0x1p-53;  // unit roundoffs
-// A rounding's absolute error below float's normal range: half the smallest subnormal.
-constexpr double kUnderflow = 0x1p-150;
 // The monomials are exact to long double's precision, not better: each counts as off by this.
 constexpr double kMonomialRelativeError = 0x1p-60;
 // Where the ulp bound applies: F >= 0.6 (kutlog/lobe.hpp).
 constexpr double kEpicenter = 0.6;
 
-// The error of rounding a value of magnitude at most m: half an ulp in float lanes (half of
-// unit m to unit m, by where m sits in its binade), unit m in double.
-struct Rounding {
-  bool to_float;
-  double operator()(double magnitude) const {
-    return to_float ? 0.5 * ulp_of_float(magnitude) : kDoubleUnit * magnitude + kUnderflow;
-  }
-};
-
-struct Interval {
-  double lo, hi;
-  double magnitude() const { return std::max(-lo, hi); }
-};
-Interval times(Interval a, Interval b) {
-  const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
-  return {std::min(std::min(p1, p2), std::min(p3, p4)),
-          std::max(std::max(p1, p2), std::max(p3, p4))};
-}
-
-// Horner's rule for sum c_i x^i with x in an interval, each operation rounded: bounds on the
-// magnitude of the exact value and on the error of the computed one against it. The exact
-// partial sums are carried as intervals, so each rounding is bounded by the ulp of what it
-// rounds there. A fused multiply-add rounds once, else the product rounds too.
 using Coefficients = std::array<double, LobeKernel::kMaxDegree + 1>;
-
-struct HornerBound {
-  double magnitude, error;
-  double lowest;  // of the exact value
-};
-HornerBound horner_bound(const Coefficients& c, int degree, Interval x, Rounding round,
-                         bool product_rounded) {
-  const double x_magnitude = x.magnitude();
-  Interval partial{c[degree], c[degree]};
-  double error = 0;
-  for (int i = degree; i-- > 0;) {
-    const Interval product = times(partial, x);
-    double before_sum = error * x_magnitude;
-    if (product_rounded) before_sum += round(product.magnitude() + before_sum);
-    partial = {product.lo + c[i], product.hi + c[i]};
-    error = before_sum + round(partial.magnitude() + before_sum);
-  }
-  return {partial.magnitude(), error, partial.lo};
-}
 
 // The same bounds for Estrin's scheme as the scalar path runs it (LobeKernel::with_q): the
 // sum of c[first + i] x^i over i < count is the lowest bit_floor(count - 1) terms plus
@@ -99,6 +55,21 @@ HornerBound estrin_bound(const Coefficients& c, int degree, Interval x, Rounding
 }
 
 }  // namespace
+
+HornerBound horner_bound(std::span<const double> c, Interval x, Rounding round,
+                         bool product_rounded) {
+  const double x_magnitude = x.magnitude();
+  Interval partial{c.back(), c.back()};
+  double error = 0;
+  for (std::size_t i = c.size() - 1; i-- > 0;) {
+    const Interval product = times(partial, x);
+    double before_sum = error * x_magnitude;
+    if (product_rounded) before_sum += round(product.magnitude() + before_sum);
+    partial = {product.lo + c[i], product.hi + c[i]};
+    error = before_sum + round(partial.magnitude() + before_sum);
+  }
+  return {partial.magnitude(), error, partial.lo};
+}
 
 LobeProfile lobe_profile(const LobeShape& shape, double w_max, int pieces) {
   // Half the pieces on the epicenter, which ends at a piece's end: its ulp bound is tighter.
@@ -170,10 +141,12 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
     // Horner's rule in full, or down to r, q = c_0 + s r, with the last step exact; the
     // scalar path runs Estrin's scheme.
     const HornerBound horner =
-        compensated ? horner_bound(above_constant, degree - 1, x, round, false)
+        compensated ? horner_bound(std::span(above_constant).first(std::size_t(degree)), x,
+                                   round, false)
         : arithmetic == Arithmetic::scalar
             ? estrin_bound(stored, degree, x, round, product_rounded)
-            : horner_bound(stored, degree, x, round, product_rounded);
+            : horner_bound(std::span(stored).first(std::size_t(degree) + 1), x, round,
+                           product_rounded);
     double coefficient_error = 0, slope = 0, sigma_power = 1;  // slope: sum i |c_i| sigma^i
     for (int i = 0; i <= degree; ++i, sigma_power *= sigma) {
       coefficient_error += rounding[i] * sigma_power;

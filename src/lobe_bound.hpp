@@ -18,9 +18,11 @@
 // base's error reaches F multiplied by k B^(k-1).
 #pragma once
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "kutlog/detail/float_ulp.hpp"
@@ -60,6 +62,40 @@ struct QuotientFit {
   std::vector<Real> monomials;  // unscaled, in s = center_t - t (polynomial) or in w
   double approximation_error;   // on the unscaled q
 };
+
+inline constexpr double kFloatUnit = 0x1p-24, kDoubleUnit = 0x1p-53;  // unit roundoffs
+
+// The error of rounding a value of magnitude at most m: half an ulp in float (half of unit m
+// to unit m, by where m sits in its binade), unit m in double, whose underflow adds half the
+// smallest subnormal float.
+struct Rounding {
+  bool to_float;
+  double operator()(double magnitude) const {
+    return to_float ? 0.5 * ulp_of_float(magnitude) : kDoubleUnit * magnitude + 0x1p-150;
+  }
+};
+
+struct Interval {
+  double lo, hi;
+  double magnitude() const { return std::max(-lo, hi); }
+};
+inline Interval times(Interval a, Interval b) {
+  const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
+  return {std::min(std::min(p1, p2), std::min(p3, p4)),
+          std::max(std::max(p1, p2), std::max(p3, p4))};
+}
+
+// Horner's rule for sum c_i x^i (c's last the highest) with x in an interval, each operation
+// rounded: bounds on the magnitude of the exact value and on the error of the computed one
+// against it. The exact partial sums are carried as intervals, so each rounding is bounded by
+// the ulp of what it rounds there. A fused multiply-add rounds once, else the product rounds
+// too: the unfused bound covers both, and any mix of them.
+struct HornerBound {
+  double magnitude, error;
+  double lowest;  // of the exact value
+};
+HornerBound horner_bound(std::span<const double> c, Interval x, Rounding round,
+                         bool product_rounded);
 
 // The worst errors of a kernel over the support, in the units of the contract: |out - scale F|
 // relative to scale, and in ulps of the float scale F where F >= 0.6 (0 if no such t). For

@@ -96,9 +96,8 @@ std::optional<ScalarPiecesFitter::Fitted<Pieces>> ScalarPiecesFitter::certify(
   using Type = std::remove_cvref_t<decltype(Pieces::pieces_per_w)>;
   constexpr std::size_t kDegree = Pieces::degree;
   constexpr bool kInDouble = std::is_same_v<Type, double>;
-  constexpr double kUnit = std::numeric_limits<Type>::epsilon() / 2;
-  // Horner's rule, kDegree multiplies and adds: gamma_2d = 2 d u / (1 - 2 d u).
-  constexpr double kHornerGamma = 2.0 * kDegree * kUnit / (1 - 2.0 * kDegree * kUnit);
+  constexpr double kUnit = kInDouble ? kDoubleUnit : kFloatUnit;
+  const Rounding round{!kInDouble};
   const int count = cut.pieces;
   const auto x_of = [](float t, Type pieces_per_w) {  // as evaluate computes it
     return (Type(1) - Type(std::min(t, 1.0f))) * pieces_per_w;
@@ -154,7 +153,8 @@ std::optional<ScalarPiecesFitter::Fitted<Pieces>> ScalarPiecesFitter::certify(
       coefficient_error += double(std::fabs(scale * monomials[0] - Real(Type(scale))));
       c[0] = double(Type(scale));
     }
-    const auto horner = [&] { return kHornerGamma * magnitude(c, u_bound); };
+    // Horner's rule's roundings, fused or not, as the caller's flags compile it.
+    const auto horner = [&] { return horner_bound(c, {u_lo, u_hi}, round, true).error; };
     // The range proof: the computed value within [0, ceiling), c[0] moved if it is not. At the
     // peak, piece 0 (u >= 0): where the rest of Horner's rule, r(u) = c1 + c2 u + ..., is below
     // 0 with its roundings, the computed u r(u) <= 0 and c0 + u r(u) rounds to at most
@@ -163,7 +163,8 @@ std::optional<ScalarPiecesFitter::Fitted<Pieces>> ScalarPiecesFitter::certify(
       if (i != 0) return false;
       std::array<double, kDegree> rest;
       for (std::size_t j = 0; j < kDegree; ++j) rest[j] = c[j + 1];
-      return polynomial_range(rest, 0, u_hi).hi + kHornerGamma * magnitude(rest, u_bound) < 0;
+      return polynomial_range(rest, 0, u_hi).hi + horner_bound(rest, {0, u_hi}, round, true).error <
+             0;
     };
     const auto within = [&](const Range& range) {
       return range.lo - horner() >= 0 && (peak_proven() || range.hi + horner() < ceiling);

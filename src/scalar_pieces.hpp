@@ -5,7 +5,7 @@
 // the piece, meets the variant's promise:
 //   approximation:  the dropped Chebyshev terms, and the aliasing the last ones tell;
 //   coefficients:   each rounded to the table's type, and moved where the range proof needs it;
-//   Horner's rule:  gamma_2d sum |c_j u^j| (Higham), whether the caller's flags fuse or not;
+//   Horner's rule:  horner_bound (src/lobe_bound.hpp), whether the caller's flags fuse or not;
 //   input:          x = (1 - t) pieces_per_w, its roundings times the polynomial's slope;
 //   output:         the rounding to float of the double table; near the cut, the zero piece's
 //                   0 against F there.
