@@ -322,7 +322,7 @@ TEST_P(LobePerArch, HugeExponentsKeepTheDataRule) {
 }
 
 // One parameter order, n first; a k that is not an integer does not compile (Lobe(50, 0.5, 3)
-// used to truncate 0.5 to 0 and report "k = 0").
+// would truncate 0.5 to 0 and report "k = 0").
 static_assert(std::is_constructible_v<Lobe, double, int, double>);
 static_assert(!std::is_constructible_v<Lobe, double, double, double>);
 static_assert(!std::is_constructible_v<Lobe, int, double, int>);
