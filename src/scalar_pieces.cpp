@@ -4,7 +4,6 @@
 #include <array>
 #include <bit>
 #include <cmath>
-#include <limits>
 #include <type_traits>
 
 #include "kutlog/detail/float_ulp.hpp"
@@ -163,8 +162,8 @@ std::optional<ScalarPiecesFitter::Fitted<Pieces>> ScalarPiecesFitter::certify(
       if (i != 0) return false;
       std::array<double, kDegree> rest;
       for (std::size_t j = 0; j < kDegree; ++j) rest[j] = c[j + 1];
-      return polynomial_range(rest, 0, u_hi).hi + horner_bound(rest, {0, u_hi}, round, true).error <
-             0;
+      const double rest_error = horner_bound(rest, {0, u_hi}, round, true).error;
+      return polynomial_range(rest, 0, u_hi).hi + rest_error < 0;
     };
     const auto within = [&](const Range& range) {
       return range.lo - horner() >= 0 && (peak_proven() || range.hi + horner() < ceiling);
