@@ -25,7 +25,6 @@
 #include <fstream>
 #include <memory>
 #include <numbers>
-#include <optional>
 #include <random>
 #include <utility>
 #include <string_view>
