@@ -12,7 +12,6 @@
 #include "kutlog/lobe.hpp"
 #include "kutlog/reference.hpp"
 #include "cpu_features.hpp"
-#include "lobe_cut.hpp"
 #include "polynomial_fit.hpp"
 
 namespace kutlog {
@@ -85,9 +84,14 @@ std::optional<FloatFit> fit_float(const std::function<Real(Real)>& g, double lo,
 constexpr double kPreciseTarget = 0x1p-23, kFastTarget = 0x1p-19;
 // F = 0 exactly past the cut-off (v >= (pi/2)^2) asks the cut moved down by more than v's
 // relative error e (measured to 2^-22.5 precise): then F <= B ~ pi/4 (margin + e) where the
-// kernel zeroes it, within the bound (tests/test_lobe.cpp, PerLane*).
+// kernel zeroes it, within the bound (tests/test_lobe.cpp, PerLane*). Below the cut B is
+// then at least pi/4 margin - (R's error) - (a product's rounding, SSE4.1) > 0.3 target: the
+// kernels take its power unclamped.
 constexpr double kPreciseCutMargin = 0x1p-22, kFastCutMargin = 0x1p-18;
+static_assert(kPreciseCutMargin * 0.785 > kPreciseTarget * (1 + 0x1p-2) &&
+              kFastCutMargin * 0.785 > kFastTarget * (1 + 0x1p-2));
 constexpr float kVCut = float(ref::pi * ref::pi / 4);
+constexpr int kCompensatedMaxK = 5;
 
 // The base B = cos(sqrt(v)) = 1 - v R(v) on [0, v_cut = (pi/2)^2], F = B^k. R's relative
 // error reaches B multiplied by v R = 1 - B <= 1, and F multiplied by k. (Fitting cos^k
@@ -100,7 +104,7 @@ FloatFit fit_base(double target, int degree) {
         const Real half_sine = std::sin(std::sqrt(v) / 2);
         return 2 * half_sine * half_sine / v;
       },
-      0, double(kVCut), double(kVCut / 2), target);
+      0, double(kVCut), 0, target);
   // A lower degree is padded with zeros: Horner's rule adds them exactly.
   if (!r || r->degree > degree)
     throw std::logic_error("kutlog: no fit of (1 - cos(sqrt(v))) / v meets its target");
@@ -133,11 +137,12 @@ PerLaneLobe::PerLaneLobe(double n_min, double n_max, int k, double Q) : k_(k), Q
   PerLaneKernel& kernel = kernels_[int(Variant::precise)];
   kernel.n_min = float(n_min);
   kernel.n_max = float(n_max);
-  // Every lane's lobe fits inside the widest one, that of n_min: t at or below its cut-off is
-  // 0 for every lane, and G is fitted on its support.
+  // Every lane's lobe fits inside the widest one, that of n_min: past its cut-off, w_max,
+  // every lane's v passes (pi/2)^2. G is fitted up to w_max and w clamped 2^-10 past it, so
+  // far that neither v's rounding nor G's drift there brings v back below v_cut.
   const ref::KutlogLobe widest(n_min, k, Q);
-  kernel.t_guard = detail::float_at_or_below_cut(std::cos(widest.cutoff_angle()));
-  const double w_max = 1 - std::cos(widest.cutoff_angle());
+  const double w_max = std::max(1 - std::cos(widest.cutoff_angle()), 1e-6);
+  kernel.w_limit = float(w_max * (1 + 0x1p-10));
   const double y_lo = 1 / n_max, y_hi = 1 / n_min;
   kernel.y_center = float(0.5 * (y_lo + y_hi));
   const double theta_k = ref::acos_of_root(Q, k);
@@ -166,7 +171,6 @@ PerLaneLobe::PerLaneLobe(double n_min, double n_max, int k, double Q) : k_(k), Q
       kernel.y_center, kPreciseTarget));
   kernel.k_degree = coef.degree;
   kernel.coef_k = coef.coefficients;
-  kernel.v_center = kVCut / 2;
   kernel.k = k;
   // The fast variant: the same c^2 and coef (low degrees either way, and its peak the
   // precise one's), G and R to its target, the power in float.
@@ -181,14 +185,18 @@ PerLaneLobe::PerLaneLobe(double n_min, double n_max, int k, double Q) : k_(k), Q
           const Real theta = 2 * std::asin(std::sqrt(w / 2));
           return theta * theta / w;
         },
-        0, std::max(w_max, 1e-6), 0, target));
+        0, w_max, 0, target));
     of_variant.g_degree = g.degree;
     of_variant.g = g.coefficients;
     of_variant.r_degree = base_fit(variant).degree;
     of_variant.r = base_fit(variant).coefficients;
     // At k = 1 there is no power: the base in float, one fused multiply-add, is rounded once
-    // as in double (FMA archs; SSE4.1 adds its product's rounding, within the bound).
-    of_variant.power_in_float = variant == Variant::fast || k == 1;
+    // as in double (FMA archs; SSE4.1 adds its product's rounding, within the bound). Up to
+    // kCompensatedMaxK the power's own roundings, about k, stay within the epicenter bound.
+    using Power = PerLaneKernel::Power;
+    of_variant.power = variant == Variant::fast || k == 1 ? Power::in_float
+                       : k <= kCompensatedMaxK           ? Power::compensated
+                                                         : Power::in_double;
     const double margin = variant == Variant::fast ? kFastCutMargin : kPreciseCutMargin;
     of_variant.v_cut = float(double(kVCut) * (1 - margin));
   }

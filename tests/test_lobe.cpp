@@ -616,7 +616,7 @@ TEST(PerLaneFits, MeetTheirTargetFusedAndUnfused) {
            const double theta = 2 * std::asin(std::sqrt(w / 2));
            return w < 1e-30 ? 2.0 : theta * theta / w;
          }},
-        {kernel.r, kernel.r_degree, 0, kernel.v_cut, kernel.v_center, [](double v) {
+        {kernel.r, kernel.r_degree, 0, kernel.v_cut, 0, [](double v) {
            const double half_sine = std::sin(std::sqrt(v) / 2);
            return v < 1e-30 ? 0.5 : 2 * half_sine * half_sine / v;
          }}};

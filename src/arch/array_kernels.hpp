@@ -17,6 +17,24 @@
 
 namespace kutlog::detail {
 
+// PerLaneLobe's array loop, on the instance of PreparedPerLaneLobe that matches the kernel.
+template <class Arch>
+void per_lane_array(const PerLaneKernel& kernel, bool normalized, const float* t, const float* n,
+                    float* out, std::size_t count) {
+  const auto run = [&](const auto& lobe) { map_arrays<Arch, 2>(lobe, {t, n}, out, count, 1.0f); };
+  using simd::PreparedPerLaneLobe;
+  using Power = PerLaneKernel::Power;
+  constexpr int kFastDegree = PerLaneKernel::kFastBaseDegree;
+  if (kernel.r_degree == kFastDegree)
+    return run(PreparedPerLaneLobe<Arch, Power::in_float, kFastDegree>(kernel, normalized));
+  if (kernel.power == Power::in_float)
+    return run(PreparedPerLaneLobe<Arch, Power::in_float>(kernel, normalized));
+  if constexpr (simd::has_fused_fma<Arch>)
+    if (kernel.power == Power::compensated)
+      return run(PreparedPerLaneLobe<Arch, Power::compensated>(kernel, normalized));
+  run(PreparedPerLaneLobe<Arch>(kernel, normalized));
+}
+
 template <class Arch>
 KernelTable make_kernel_table() {
   using F = xsimd::batch<float, Arch>;
@@ -38,16 +56,7 @@ KernelTable make_kernel_table() {
 #undef KUTLOG_UNARY_SLOT
 #undef KUTLOG_BINARY_SLOTS
   static_cast<LobeArrayKernels&>(table) = lobe_array_kernels<Arch>();
-  table.kutlog_per_lane = [](const PerLaneKernel& kernel, bool normalized, const float* t,
-                             const float* n, float* out, std::size_t count) {
-    const auto run = [&](const auto& lobe) { map_arrays<Arch, 2>(lobe, {t, n}, out, count, 1.0f); };
-    using simd::PreparedPerLaneLobe;
-    constexpr int kFastDegree = PerLaneKernel::kFastBaseDegree;
-    if (kernel.r_degree == kFastDegree)
-      return run(PreparedPerLaneLobe<Arch, true, kFastDegree>(kernel, normalized));
-    if (kernel.power_in_float) return run(PreparedPerLaneLobe<Arch, true>(kernel, normalized));
-    run(PreparedPerLaneLobe<Arch>(kernel, normalized));
-  };
+  table.kutlog_per_lane = &per_lane_array<Arch>;
   table.blinn_phong_xsimd = [](const float* t, float n, float scale, float* out, std::size_t count) {
     const F exponent(n), factor(scale);
     map_arrays<Arch, 1>([&](F v) { return simd::blinn_phong_xsimd(v, exponent, factor); }, {t},

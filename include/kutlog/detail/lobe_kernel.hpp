@@ -168,15 +168,18 @@ using ScalarPieces = PiecewisePolynomial<double, 3>;
 using FastScalarPieces = PiecewisePolynomial<float, 2>;
 
 // PerLaneLobe's: c^2 = n H(1/n - y_center), coef = n K(.), acos(t)^2 = w G(w), v = c^2 acos(t)^2
-// and F = (1 - v R(v - v_center))^k.
+// and F = (1 - v R(v))^k, 0 where v >= v_cut. w is clamped to w_limit, past every lane's cut-off,
+// so t below it is off the support with no test of its own.
 struct PerLaneKernel {
   static constexpr int kMaxDegree = 20;
   using Coefficients = std::array<float, kMaxDegree + 1>;
-  float n_min = 1, n_max = 1, y_center = 0, v_center = 0, v_cut = 0, t_guard = 0;
+  float n_min = 1, n_max = 1, y_center = 0, v_cut = 0, w_limit = 0;
   int k = 1, h_degree = 0, k_degree = 0, g_degree = 0, r_degree = 0;
-  // The SIMD power in float lanes (fast; precise where its rounding, k-fold, meets the
-  // bounds), else in double lanes.
-  bool power_in_float = false;
+  // Where the SIMD kernel takes the power: in float lanes (fast, and precise at k = 1: the
+  // base is rounded once, as in double); in float lanes with the base's rounding carried
+  // beside it (precise at small k, FMA archs); else in double lanes.
+  enum class Power { in_float, compensated, in_double };
+  Power power = Power::in_double;
   // R's degree by variant: R is the same for every material, so the SIMD kernels unroll it.
   static constexpr int kPreciseBaseDegree = 4, kFastBaseDegree = 3;
   Coefficients h{}, coef_k{}, g{}, r{};
@@ -186,12 +189,12 @@ struct PerLaneKernel {
     if (t != t || n != n) return t + n;  // NaN
     const double n_clamped = double(n < n_min ? n_min : n > n_max ? n_max : n);
     const double y_offset = 1.0 / n_clamped - double(y_center);
-    const double w = t < 1.0f ? 1.0 - double(t) : 0.0;
+    const double w = std::min(double(w_limit), t < 1.0f ? 1.0 - double(t) : 0.0);
     const double v = n_clamped * horner(h, h_degree, y_offset) * (w * horner(g, g_degree, w));
-    if (t <= t_guard || v >= double(v_cut)) return 0.0f;
-    double power = detail::integer_power(1.0 - v * horner(r, r_degree, v - double(v_center)), k);
-    power = power < 0.0 ? 0.0 : power > 1.0 ? 1.0 : power;
-    return float(normalized ? power * (n_clamped * horner(coef_k, k_degree, y_offset)) : power);
+    if (v >= double(v_cut)) return 0.0f;
+    // In [0, 1], as in the SIMD kernel (kutlog/simd/lobe.hpp).
+    const double value = detail::integer_power(1.0 - v * horner(r, r_degree, v), k);
+    return float(normalized ? value * (n_clamped * horner(coef_k, k_degree, y_offset)) : value);
   }
 
  private:

@@ -131,16 +131,16 @@ class PreparedLobe {
 };
 
 // A PerLaneKernel with its constants broadcast once: F(t; n) per lane (kutlog/lobe.hpp).
-// kPowerInFloat must equal the kernel's power_in_float or be false (the power then in double
-// lanes, slower and within the precise bound); kBaseDegree must be the kernel's r_degree.
-template <class Arch, bool kPowerInFloat = false,
+// kPower must be the kernel's power or in_double (slower, within the precise bound);
+// compensated needs a fused multiply-add. kBaseDegree must be the kernel's r_degree.
+template <class Arch, PerLaneKernel::Power kPower = PerLaneKernel::Power::in_double,
           int kBaseDegree = PerLaneKernel::kPreciseBaseDegree>
 class PreparedPerLaneLobe {
  public:
   using F = floats<Arch>;
 
   PreparedPerLaneLobe(const PerLaneKernel& kernel, bool normalized)
-      : kernel_(kernel), normalized_(normalized) {
+      : kernel_(kernel), normalized_(normalized), k_(float(kernel.k)) {
     for (std::size_t i = 0; i < h_.size(); ++i)
       h_[i] = F(kernel.h[i]), coef_k_[i] = F(kernel.coef_k[i]), g_[i] = F(kernel.g[i]),
       r_[i] = F(kernel.r[i]);
@@ -153,24 +153,43 @@ class PreparedPerLaneLobe {
     y = mul_add(y, neg_mul_add(n_clamped, y, F(1.0f)), y);
     const F y_offset = y - F(kernel_.y_center);
     const F c_squared = n_clamped * horner(y_offset, h_, kernel_.h_degree);
-    const F w = F(1.0f) - xsimd::min(F(1.0f), t);
+    // min(w_limit, .) keeps NaN; past w_limit every lane's v >= v_cut.
+    const F w = xsimd::min(F(kernel_.w_limit), F(1.0f) - xsimd::min(F(1.0f), t));
     const F v = c_squared * (w * horner(w, g_, kernel_.g_degree));
-    const F base_offset = v - F(kernel_.v_center);
     F r = r_[kBaseDegree];
-    for (int i = kBaseDegree; i-- > 0;) r = mul_add(r, base_offset, r_[std::size_t(i)]);
+    for (int i = kBaseDegree; i-- > 0;) r = mul_add(r, v, r_[std::size_t(i)]);
+    // The base is in [0, 1] where v < v_cut: v r >= 0, and the cut's margin exceeds R's error
+    // (src/per_lane_lobe.cpp). Its power is too.
+    using Power = PerLaneKernel::Power;
     F value;
-    if constexpr (kPowerInFloat)
-      value = detail::clamp_zero_to(
-          kutlog::detail::integer_power(neg_mul_add(v, r, F(1.0f)), kernel_.k), F(1.0f));
+    if constexpr (kPower == Power::in_float)
+      value = kutlog::detail::integer_power(neg_mul_add(v, r, F(1.0f)), kernel_.k);
+    else if constexpr (kPower == Power::compensated)
+      value = compensated_power(v, r);
     else
-      value = detail::clamp_zero_to(power_in_double(v, r), F(1.0f));
-    if (normalized_) value *= n_clamped * horner(y_offset, coef_k_, kernel_.k_degree);
-    // 0 off the support, but NaN for a NaN n there too (the contract: NaN n gives NaN).
-    const auto off_support = t <= F(kernel_.t_guard) || v >= F(kernel_.v_cut);
-    return xsimd::select(off_support && !xsimd::isnan(n), F(0.0f), value);
+      value = power_in_double(v, r);
+    // 0 where v >= v_cut; a NaN t or n gives a NaN v, kept.
+    if (!normalized_) return xsimd::select(v >= F(kernel_.v_cut), F(0.0f), value);
+    const F coef = n_clamped * horner(y_offset, coef_k_, kernel_.k_degree);
+#if XSIMD_WITH_AVX512F
+    if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>)
+      return _mm512_maskz_mul_ps(_mm512_cmp_ps_mask(v, F(kernel_.v_cut), _CMP_NGE_UQ), value,
+                                 coef);
+#endif
+    return xsimd::select(v >= F(kernel_.v_cut), F(0.0f), value * coef);
   }
 
  private:
+  // (1 - v r)^k = b^(k-1) (b + k e) to first order in e, where b + e is the base exactly
+  // (e within its own rounding): the base's rounding, k-fold in b^k, is carried out. 1 - b
+  // is exact where b >= 1/2, all of F >= 0.6 (the epicenter); below, F's error stays small.
+  [[gnu::always_inline]] F compensated_power(F v, F r) const {
+    static_assert(has_fused_fma<Arch>, "e is exact only with a fused multiply-add");
+    const F base = neg_mul_add(v, r, F(1.0f));
+    const F error = neg_mul_add(v, r, F(1.0f) - base);
+    return kutlog::detail::integer_power(base, kernel_.k - 1) * mul_add(k_, error, base);
+  }
+
   // (1 - v r)^k in double lanes, rounded once: in float the base's rounding grows k-fold.
   [[gnu::always_inline]] F power_in_double(F v, F r) const {
     using D = doubles<Arch>;
@@ -182,10 +201,14 @@ class PreparedPerLaneLobe {
   }
 
   using Batches = std::array<F, PerLaneKernel::kMaxDegree + 1>;
-  // Horner's rule from c[degree] down, entered at the degree's step: one jump a batch where a
-  // loop of degree steps measured 6% slower.
+  // Horner's rule from c[degree] down. Degrees 1 to 3, the setup's usual, by branches the
+  // predictor learns (a jump table's indirect jump cost 12% of the kernel at n = 1000); the
+  // others enter the chain at the degree's step, where a loop measured 6% slower.
   [[gnu::always_inline]] static F horner(F x, const Batches& c, int degree) {
     static_assert(PerLaneKernel::kMaxDegree == 20, "one step per degree below");
+    if (degree == 1) return mul_add(c[1], x, c[0]);
+    if (degree == 2) return mul_add(mul_add(c[2], x, c[1]), x, c[0]);
+    if (degree == 3) return mul_add(mul_add(mul_add(c[3], x, c[2]), x, c[1]), x, c[0]);
     F r = c[std::size_t(degree)];
     switch (degree) {
 #define KUTLOG_STEP(d) case d: r = mul_add(r, x, c[d - 1]); [[fallthrough]];
@@ -201,6 +224,7 @@ class PreparedPerLaneLobe {
 
   const PerLaneKernel& kernel_;
   bool normalized_;
+  F k_;
   Batches h_, coef_k_, g_, r_;
 };
 
