@@ -187,9 +187,11 @@ struct PerLaneKernel {
   // The SIMD kernel's formulas in double, rounded once.
   float evaluate(float t, float n, bool normalized) const noexcept {
     if (t != t || n != n) return t + n;  // NaN
+    // Past every lane's cut-off: a test of t alone, which resolves without the reciprocal.
+    const double w = t < 1.0f ? 1.0 - double(t) : 0.0;
+    if (w >= double(w_limit)) return 0.0f;
     const double n_clamped = double(n < n_min ? n_min : n > n_max ? n_max : n);
     const double y_offset = 1.0 / n_clamped - double(y_center);
-    const double w = std::min(double(w_limit), t < 1.0f ? 1.0 - double(t) : 0.0);
     const double v = n_clamped * horner(h, h_degree, y_offset) * (w * horner(g, g_degree, w));
     if (v >= double(v_cut)) return 0.0f;
     // In [0, 1], as in the SIMD kernel (kutlog/simd/lobe.hpp).
