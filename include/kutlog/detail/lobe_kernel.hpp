@@ -168,8 +168,8 @@ using ScalarPieces = PiecewisePolynomial<double, 3>;
 using FastScalarPieces = PiecewisePolynomial<float, 2>;
 
 // PerLaneLobe's: c^2 = n H(1/n - y_center), coef = n K(.), acos(t)^2 = w G(w), v = c^2 acos(t)^2
-// and F = (1 - v R(v))^k, 0 where v >= v_cut. w is clamped to w_limit, past every lane's cut-off,
-// so t below it is off the support with no test of its own.
+// and F = (1 - v R(v))^k, 0 where v >= v_cut. At w_limit every lane is past its cut-off: the
+// SIMD kernel clamps w there (t below needs no test of its own), the scalar one returns 0.
 struct PerLaneKernel {
   static constexpr int kMaxDegree = 20;
   using Coefficients = std::array<float, kMaxDegree + 1>;
