@@ -18,14 +18,14 @@ constexpr long kChunk = 4096;
 
 std::optional<double> measured_epicenter_ulp(const LobeKernel& kernel, Arithmetic arithmetic,
                                              const QuotientFit& reference, double scale,
-                                             double w_epicenter) {
+                                             double w_epicenter, double limit) {
   const LobeArrayKernels* kernels = lobe_array_kernels_for(arithmetic);
   if (!kernels || kernel.form != LobeKernel::Form::polynomial) return std::nullopt;
   // Every float t of [1 - w_epicenter, 1], 1 first (t above 1 gives t = 1's output).
   const float t_lowest = float(1 - w_epicenter);
   const long count = long(std::bit_cast<std::uint32_t>(1.0f)) -
                      long(std::bit_cast<std::uint32_t>(t_lowest)) + 1;
-  if (count > kMaxCheckedEpicenterFloats) return std::nullopt;
+  if (count > max_checked_epicenter_floats(arithmetic)) return std::nullopt;
 
   // scale (1 - w p(s)) in double: s = center_t - t and w = 1 - t are exact (floats of one
   // binade or two), the coefficients off by half a unit each, Horner's rule by one unit per
@@ -45,17 +45,22 @@ std::optional<double> measured_epicenter_ulp(const LobeKernel& kernel, Arithmeti
                      (2 * degree + 3) * kDoubleUnit * absolute_sum) +
           2 * kDoubleUnit * scale};
 
-  // In chunks that stay in L1, the reference on the best arch's double lanes.
+  // In chunks that stay in L1, the reference on the best arch's double lanes; every 16th
+  // float first.
   const EpicenterSweepKernel sweep = best_kernel_table().epicenter_worst_ulp;
   std::vector<float> t(std::size_t(std::min<long>(count, kChunk))), out(t.size());
   double worst = 0;
-  for (long first = 0; first < count; first += kChunk) {
-    const std::size_t size = std::size_t(std::min<long>(kChunk, count - first));
-    const std::uint32_t first_bits = std::bit_cast<std::uint32_t>(1.0f) - std::uint32_t(first);
-    for (std::size_t i = 0; i < size; ++i)
-      t[i] = std::bit_cast<float>(first_bits - std::uint32_t(i));
-    kernels->of(kernel)(kernel, t.data(), out.data(), size);
-    worst = std::max(worst, sweep(exact, t.data(), out.data(), size));
+  for (const long stride : {16L, 1L}) {
+    for (long first = 0; first < count; first += kChunk * stride) {
+      const std::size_t size =
+          std::size_t(std::min<long>(kChunk, (count - first + stride - 1) / stride));
+      const std::uint32_t first_bits = std::bit_cast<std::uint32_t>(1.0f) - std::uint32_t(first);
+      for (std::size_t i = 0; i < size; ++i)
+        t[i] = std::bit_cast<float>(first_bits - std::uint32_t(stride * long(i)));
+      kernels->of(kernel)(kernel, t.data(), out.data(), size);
+      worst = std::max(worst, sweep(exact, t.data(), out.data(), size));
+      if (worst > limit) return worst;
+    }
   }
   return worst;
 }

@@ -18,20 +18,25 @@
 
 namespace kutlog::detail {
 
-// Epicenters of more floats are not run (lobes of n below about 70, by k and Q): the check
-// would cost more than the setup's budget (a Lobe in at most a millisecond), and the certified
-// forms serve them.
-inline constexpr long kMaxCheckedEpicenterFloats = 1L << 17;
+// Epicenters of more floats are not run: the check would cost more than the setup's budget,
+// and the certified forms serve them. With FMA (lobes of n below about 70, by k and Q) the
+// compensated form does, within a millisecond; unfused has no such form, and the double form
+// runs at a third of the float one's speed: its larger epicenters (n down to about 10) are run
+// in a few milliseconds.
+constexpr long max_checked_epicenter_floats(Arithmetic arithmetic) {
+  return arithmetic == Arithmetic::unfused ? 1L << 20 : 1L << 17;
+}
 
 // The largest error of a polynomial kernel for SIMD lanes of that arithmetic (fused or
 // unfused) over every float t in [1 - w_epicenter, 1], in ulps of the exact scale F, against
 // scale (1 - w p(s)) with p the reference fit (a fit of the same q, to a degree where its
 // truncation is below 2^-40 of the peak), the reference's own error bound added to each
 // float's. nullopt when this CPU has no arch of that arithmetic or the epicenter has more
-// than kMaxCheckedEpicenterFloats floats.
+// than max_checked_epicenter_floats(arithmetic) floats. Once the worst passes `limit` it returns
+// it at once, and every 16th float runs first: most kernels that miss cost a sixteenth.
 std::optional<double> measured_epicenter_ulp(const LobeKernel& kernel, Arithmetic arithmetic,
                                              const QuotientFit& reference, double scale,
-                                             double w_epicenter);
+                                             double w_epicenter, double limit);
 
 // The kernels of this CPU's best arch with (fused) or without (unfused) FMA
 // (src/dispatch.cpp), or nullptr if it has none; nullptr for the scalar path.

@@ -147,7 +147,7 @@ std::optional<detail::CertifiedError> meets(const LobeKernel& kernel, Arithmetic
   if (!reference) return std::nullopt;
   const std::optional<double> measured =
       detail::measured_epicenter_ulp(kernel, arithmetic, *reference, scale,
-                                     profiles.coarse.w_epicenter);
+                                     profiles.coarse.w_epicenter, target.epicenter_ulp);
   if (measured && *measured <= target.epicenter_ulp) return certified;
   return std::nullopt;
 }
