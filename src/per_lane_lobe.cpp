@@ -166,6 +166,33 @@ PerLaneLobe::PerLaneLobe(double n_min, double n_max, int k, double Q) : k_(k), Q
       y_lo, y_hi, kernel.y_center, kPreciseTarget));
   kernel.h_degree = h.degree;
   kernel.h = h.coefficients;
+  if (h.degree == 1) {
+    // n H(1/n - y_center) = slope n + h_1, slope = h_0 - h_1 y_center in two floats (one
+    // would add its rounding, 2^-24 of c^2, to H's): with a fused multiply-add, rounded once.
+    // Kept where the line's own error plus that rounding meets H's target against c^2 on n
+    // even and log-even over the range (the line's error is smooth; the rounding is bounded,
+    // not sampled). Unfused, its three roundings could not leave H's error room.
+    const double slope =
+        double(h.coefficients[0]) - double(h.coefficients[1]) * double(kernel.y_center);
+    const float slope_hi = float(slope), slope_lo = float(slope - double(slope_hi));
+    const double intercept = double(h.coefficients[1]);
+    constexpr int kGridIntervals = 512;
+    bool meets_target = true;
+    for (int j = 0; j <= kGridIntervals && meets_target; ++j)
+      for (double n : {n_min + (n_max - n_min) * j / kGridIntervals,
+                       n_min * std::pow(n_max / n_min, double(j) / kGridIntervals)}) {
+        const double x = double(std::clamp(float(n), float(n_min), float(n_max)));
+        const double theta_n = ref::acos_of_root(Q, x);
+        const double exact = theta_k * theta_k / (theta_n * theta_n);
+        const double low = double(slope_lo) * x + intercept;
+        const double line = double(slope_hi) * x + low;
+        const double rounding = 0x1p-24 * (std::fabs(line) + std::fabs(low)) * (1 + 0x1p-20);
+        if (!(std::fabs(line - exact) + rounding <= kPreciseTarget * exact)) meets_target = false;
+      }
+    kernel.c_squared_linear = meets_target;
+    kernel.c_squared_slope = slope_hi;
+    kernel.c_squared_slope_lo = slope_lo;
+  }
   const FloatFit coef = fit_or_refuse("coef / n", fit_float(
       [&](Real y) { return y * Real(ref::coef_exact(double(1 / y), k, Q)); }, y_lo, y_hi,
       kernel.y_center, kPreciseTarget));

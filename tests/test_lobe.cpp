@@ -598,11 +598,19 @@ TEST(LobeSetup, RefusesAMaterialNoFitMeets) {
 // with each step fused (AVX2, AVX-512, NEON) and with a product and a sum (SSE4.1; this is
 // the kernel's rounding, not the compiler's: the test is compiled without contraction),
 // against the functions they stand for, on 4097 points of their intervals, for the grid's and
-// random materials (planted: the fits' target 2^-22 - 2.02 times this one; measured 0.987).
+// random materials (planted: the fits' target 2^-22 - 2.02 times this one; measured 0.987),
+// and c^2 as a line with FMA where the setup kept it (planted: its slope's low part dropped).
 TEST(PerLaneFits, MeetTheirTargetFusedAndUnfused) {
   constexpr double kTarget = 0x1p-23;
   double worst = 0;
-  for (const PerLaneCase& c : per_lane_materials(60, 2029)) {
+  int linear = 0;
+  std::vector<PerLaneCase> materials = per_lane_materials(60, 2029);
+  // The benchmark's gloss maps (n in [500, 2000]) take c^2 as a line at k = 3 and 5.
+  for (int k : {3, 5}) {
+    materials.push_back({k, 0.5, 500, 2000});
+    EXPECT_TRUE(PerLaneLobe(500, 2000, k, 0.5).kernel().c_squared_linear) << "k = " << k;
+  }
+  for (const PerLaneCase& c : materials) {
     const PerLaneLobe lobe(c.n_min, c.n_max, c.k, c.Q);
     const PerLaneKernel& kernel = lobe.kernel();
     const double theta_k = ref::acos_of_root(c.Q, c.k);
@@ -629,6 +637,18 @@ TEST(PerLaneFits, MeetTheirTargetFusedAndUnfused) {
            const double half_sine = std::sin(std::sqrt(v) / 2);
            return v < 1e-30 ? 0.5 : 2 * half_sine * half_sine / v;
          }}};
+    // c^2 = (slope + slope_lo) n + h_1 with FMA where the setup kept it, against c^2 itself.
+    if (kernel.c_squared_linear) {
+      ++linear;
+      for (int j = 0; j <= 4096; ++j) {
+        const float n = float(c.n_min + (c.n_max - c.n_min) * j / 4096);
+        const float value = std::fma(kernel.c_squared_slope, n,
+                                     std::fma(kernel.c_squared_slope_lo, n, kernel.h[1]));
+        const double theta_n = ref::acos_of_root(c.Q, double(n));
+        const double exact = theta_k * theta_k / (theta_n * theta_n);
+        worst = std::max(worst, std::fabs(value - exact) / exact);
+      }
+    }
     for (const Fit& fit : fits) {
       if (!(fit.hi > fit.lo)) continue;  // one point: its value
       for (int j = 0; j <= 4096; ++j) {
@@ -645,7 +665,8 @@ TEST(PerLaneFits, MeetTheirTargetFusedAndUnfused) {
       }
     }
   }
-  std::printf("largest error of a per-lane fit: %.3g of its target\n", worst / kTarget);
+  std::printf("largest error of a per-lane fit: %.3g of its target; c^2 a line in %d of %zu\n",
+              worst / kTarget, linear, materials.size());
   EXPECT_LE(worst, kTarget);
 }
 

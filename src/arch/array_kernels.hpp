@@ -18,21 +18,35 @@
 namespace kutlog::detail {
 
 // PerLaneLobe's array loop, on the instance of PreparedPerLaneLobe that matches the kernel.
-template <class Arch>
-void per_lane_array(const PerLaneKernel& kernel, bool normalized, const float* t, const float* n,
-                    float* out, std::size_t count) {
+template <class Arch, bool kLinearCSquared>
+void per_lane_instance(const PerLaneKernel& kernel, bool normalized, const float* t,
+                       const float* n, float* out, std::size_t count) {
   const auto run = [&](const auto& lobe) { map_arrays<Arch, 2>(lobe, {t, n}, out, count, 1.0f); };
   using simd::PreparedPerLaneLobe;
   using Power = PerLaneKernel::Power;
   constexpr int kFastDegree = PerLaneKernel::kFastBaseDegree;
+  constexpr int kPreciseDegree = PerLaneKernel::kPreciseBaseDegree;
   if (kernel.r_degree == kFastDegree)
-    return run(PreparedPerLaneLobe<Arch, Power::in_float, kFastDegree>(kernel, normalized));
+    return run(PreparedPerLaneLobe<Arch, Power::in_float, kFastDegree, kLinearCSquared>(
+        kernel, normalized));
   if (kernel.power == Power::in_float)
-    return run(PreparedPerLaneLobe<Arch, Power::in_float>(kernel, normalized));
+    return run(PreparedPerLaneLobe<Arch, Power::in_float, kPreciseDegree, kLinearCSquared>(
+        kernel, normalized));
   if constexpr (simd::has_fused_fma<Arch>)
     if (kernel.power == Power::compensated)
-      return run(PreparedPerLaneLobe<Arch, Power::compensated>(kernel, normalized));
-  run(PreparedPerLaneLobe<Arch>(kernel, normalized));
+      return run(PreparedPerLaneLobe<Arch, Power::compensated, kPreciseDegree, kLinearCSquared>(
+          kernel, normalized));
+  run(PreparedPerLaneLobe<Arch, Power::in_double, kPreciseDegree, kLinearCSquared>(kernel,
+                                                                                    normalized));
+}
+template <class Arch>
+void per_lane_array(const PerLaneKernel& kernel, bool normalized, const float* t, const float* n,
+                    float* out, std::size_t count) {
+  // The line's bound holds with a fused multiply-add only (src/per_lane_lobe.cpp).
+  if constexpr (simd::has_fused_fma<Arch>)
+    if (kernel.c_squared_linear)
+      return per_lane_instance<Arch, true>(kernel, normalized, t, n, out, count);
+  per_lane_instance<Arch, false>(kernel, normalized, t, n, out, count);
 }
 
 template <class Arch>

@@ -170,11 +170,16 @@ using FastScalarPieces = PiecewisePolynomial<float, 2>;
 // PerLaneLobe's: c^2 = n H(1/n - y_center), coef = n K(.), acos(t)^2 = w G(w), v = c^2 acos(t)^2
 // and F = (1 - v R(v))^k, 0 where v >= v_cut. At w_limit every lane is past its cut-off: the
 // SIMD kernel clamps w there (t below needs no test of its own), the scalar one returns 0.
+// Where H is linear, c^2 = (c_squared_slope + c_squared_slope_lo) n + h[1] with FMA (the
+// same line uncentered, checked to meet H's target): the power's chain then waits for no
+// reciprocal. The scalar path takes it too.
 struct PerLaneKernel {
   static constexpr int kMaxDegree = 20;
   using Coefficients = std::array<float, kMaxDegree + 1>;
   float n_min = 1, n_max = 1, y_center = 0, v_cut = 0, w_limit = 0;
   int k = 1, h_degree = 0, k_degree = 0, g_degree = 0, r_degree = 0;
+  bool c_squared_linear = false;
+  float c_squared_slope = 0, c_squared_slope_lo = 0;
   // Where the SIMD kernel takes the power: in float lanes (fast, and precise at k = 1: the
   // base is rounded once, as in double); in float lanes with the base's rounding carried
   // beside it (precise at small k, FMA archs); else in double lanes.
@@ -192,7 +197,11 @@ struct PerLaneKernel {
     if (w >= double(w_limit)) return 0.0f;
     const double n_clamped = double(n < n_min ? n_min : n > n_max ? n_max : n);
     const double y_offset = 1.0 / n_clamped - double(y_center);
-    const double v = n_clamped * horner(h, h_degree, y_offset) * (w * horner(g, g_degree, w));
+    const double c_squared = c_squared_linear
+                                 ? (double(c_squared_slope) + double(c_squared_slope_lo)) *
+                                           n_clamped + double(h[1])
+                                 : n_clamped * horner(h, h_degree, y_offset);
+    const double v = c_squared * (w * horner(g, g_degree, w));
     if (v >= double(v_cut)) return 0.0f;
     // In [0, 1], as in the SIMD kernel (kutlog/simd/lobe.hpp).
     const double value = detail::integer_power(1.0 - v * horner(r, r_degree, v), k);

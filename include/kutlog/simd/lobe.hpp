@@ -132,15 +132,18 @@ class PreparedLobe {
 
 // A PerLaneKernel with its constants broadcast once: F(t; n) per lane (kutlog/lobe.hpp).
 // kPower must be the kernel's power or in_double (slower, within the precise bound);
-// compensated needs a fused multiply-add. kBaseDegree must be the kernel's r_degree.
+// compensated needs a fused multiply-add. kBaseDegree must be the kernel's r_degree;
+// kLinearCSquared, the kernel's c_squared_linear, needs one too (a compile-time choice: as a
+// branch it cost AVX2 a tenth of its rate).
 template <class Arch, PerLaneKernel::Power kPower = PerLaneKernel::Power::in_double,
-          int kBaseDegree = PerLaneKernel::kPreciseBaseDegree>
+          int kBaseDegree = PerLaneKernel::kPreciseBaseDegree, bool kLinearCSquared = false>
 class PreparedPerLaneLobe {
  public:
   using F = floats<Arch>;
 
   PreparedPerLaneLobe(const PerLaneKernel& kernel, bool normalized)
-      : kernel_(kernel), normalized_(normalized), k_(float(kernel.k)) {
+      : kernel_(kernel), normalized_(normalized), k_(float(kernel.k)),
+        c_squared_slope_(kernel.c_squared_slope), c_squared_slope_lo_(kernel.c_squared_slope_lo) {
     for (std::size_t i = 0; i < h_.size(); ++i)
       h_[i] = F(kernel.h[i]), coef_k_[i] = F(kernel.coef_k[i]), g_[i] = F(kernel.g[i]),
       r_[i] = F(kernel.r[i]);
@@ -152,7 +155,13 @@ class PreparedPerLaneLobe {
     F y = xsimd::reciprocal(n_clamped);  // 12 or 14 bits, refined by one Newton step
     y = mul_add(y, neg_mul_add(n_clamped, y, F(1.0f)), y);
     const F y_offset = y - F(kernel_.y_center);
-    const F c_squared = n_clamped * horner(y_offset, h_, kernel_.h_degree);
+    F c_squared;
+    if constexpr (kLinearCSquared) {
+      static_assert(has_fused_fma<Arch>, "the line is bounded for one rounding");
+      c_squared = mul_add(c_squared_slope_, n_clamped, mul_add(c_squared_slope_lo_, n_clamped, h_[1]));
+    }
+    else
+      c_squared = n_clamped * horner(y_offset, h_, kernel_.h_degree);
     // min(w_limit, .) keeps NaN; past w_limit every lane's v >= v_cut.
     const F w = xsimd::min(F(kernel_.w_limit), F(1.0f) - xsimd::min(F(1.0f), t));
     const F v = c_squared * (w * horner(w, g_, kernel_.g_degree));
@@ -224,7 +233,7 @@ class PreparedPerLaneLobe {
 
   const PerLaneKernel& kernel_;
   bool normalized_;
-  F k_;
+  F k_, c_squared_slope_, c_squared_slope_lo_;
   Batches h_, coef_k_, g_, r_;
 };
 
