@@ -158,7 +158,8 @@ class PreparedPerLaneLobe {
     F c_squared;
     if constexpr (kLinearCSquared) {
       static_assert(has_fused_fma<Arch>, "the line is bounded for one rounding");
-      c_squared = mul_add(c_squared_slope_, n_clamped, mul_add(c_squared_slope_lo_, n_clamped, h_[1]));
+      const F low = mul_add(c_squared_slope_lo_, n_clamped, h_[1]);
+      c_squared = mul_add(c_squared_slope_, n_clamped, low);
     }
     else
       c_squared = n_clamped * horner(y_offset, h_, kernel_.h_degree);
