@@ -19,42 +19,50 @@ namespace {
 
 using detail::Real;
 
+// slope x + P(x - center), P's coefficients `coefficients` (slope 0 but for coef in n).
 struct FloatFit {
   int degree = 0;
   PerLaneKernel::Coefficients coefficients{};
+  float slope = 0;
 };
 
 // Whether the fit, evaluated in float by Horner's rule in x - center as every arch runs it
 // (each step one fused multiply-add, or a product and a sum: SSE4.1; this file is compiled
-// with -ffp-contract=off), is within `allowed` of `exact` (relative) at every grid point; NaN
-// (a fit that overflows float) is not.
+// with -ffp-contract=off), is within `allowed` of `exact` (relative) at every grid point;
+// NaN (a fit that overflows float) is not. A slope's term is added last by a fused
+// multiply-add: only FMA archs take that form.
 bool meets(const FloatFit& fit, const std::vector<double>& grid, const std::vector<double>& exact,
            double center, double allowed) {
   for (std::size_t j = 0; j < grid.size(); ++j) {
-    const float s = float(grid[j]) - float(center);
+    const float x = float(grid[j]), s = x - float(center);
     float fused = fit.coefficients[fit.degree], unfused = fused;
     for (int i = fit.degree; i-- > 0;) {
       fused = std::fma(fused, s, fit.coefficients[i]);
       const float product = unfused * s;
       unfused = product + fit.coefficients[i];
     }
+    if (fit.slope != 0) unfused = fused = std::fma(fit.slope, x, fused);
     for (float value : {fused, unfused})
       if (!(std::fabs(value - exact[j]) <= allowed * std::fabs(exact[j]))) return false;
   }
   return true;
 }
 
-// The lowest degree at which a truncation of g's Chebyshev series on [lo, hi], evaluated in
-// float by Horner's rule in x - center, has relative error at most `target` on a grid of 1025
-// points; none if no degree has, or if no series of degree 256 stands in for g.
+// The lowest degree at which a truncation of g's Chebyshev series on [lo, hi], as slope x
+// plus a polynomial in x - center evaluated in float by Horner's rule, has relative error at
+// most `target` on a grid of 1025 points; none if no degree has, or if no series of degree
+// 256 stands in for g. Where g is nearly slope x, the polynomial (and its rounding) is a
+// small part of g: a line alone could not meet the target, and a polynomial alone would have
+// its constant's rounding cancel against its slope's term.
 std::optional<FloatFit> fit_float(const std::function<Real(Real)>& g, double lo, double hi,
-                                  double center, double target) {
+                                  double center, double target, float slope = 0) {
   FloatFit fit;
   // A single point (n_min = n_max): its value. Interpolation nodes there would coincide.
   if (!(hi > lo)) {
-    fit.coefficients[0] = float(g(center));
+    fit.coefficients[0] = float(g(lo));
     return fit;
   }
+  fit.slope = slope;
   // The fits are checked against the series, not g: it costs 2 N + 1 calls of g (N = 8 or 16
   // mostly) where g on the grid costs 1025 (ref::coef_exact sums k + 1 terms). The
   // series' error e is allowed for twice over (it is measured where it peaks, and the sum in
@@ -68,11 +76,16 @@ std::optional<FloatFit> fit_float(const std::function<Real(Real)>& g, double lo,
   const double allowed = (target - kSeriesError) / (1 + kSeriesError);
   constexpr int kGridIntervals = 1024;
   std::vector<double> grid(kGridIntervals + 1);
-  for (int j = 0; j <= kGridIntervals; ++j) grid[j] = lo + (hi - lo) * j / kGridIntervals;
+  // Floats: the kernels take x in float (an n, a w), and a fit's error in n is about its
+  // argument's rounding.
+  for (int j = 0; j <= kGridIntervals; ++j)
+    grid[j] = double(float(lo + (hi - lo) * j / kGridIntervals));
   const std::vector<double> exact = series.values_at(grid);
   const int max_degree = std::min(PerLaneKernel::kMaxDegree, int(series.coefficients.size()) - 1);
   for (fit.degree = 1; fit.degree <= max_degree; ++fit.degree) {
-    const std::vector<Real> q = series.monomials(fit.degree, center);
+    std::vector<Real> q = series.monomials(fit.degree, center);
+    q[0] -= Real(slope) * Real(center);
+    q[1] -= Real(slope);
     for (int i = 0; i <= fit.degree; ++i) fit.coefficients[i] = float(q[i]);
     if (meets(fit, grid, exact, center, allowed)) return fit;
   }
@@ -189,7 +202,7 @@ PerLaneLobe::PerLaneLobe(double n_min, double n_max, int k, double Q) : k_(k), Q
         const double rounding = 0x1p-24 * (std::fabs(line) + std::fabs(low)) * (1 + 0x1p-20);
         if (!(std::fabs(line - exact) + rounding <= kPreciseTarget * exact)) meets_target = false;
       }
-    kernel.c_squared_linear = meets_target;
+    kernel.in_n = meets_target;  // and coef in n below
     kernel.c_squared_slope = slope_hi;
     kernel.c_squared_slope_lo = slope_lo;
   }
@@ -198,6 +211,24 @@ PerLaneLobe::PerLaneLobe(double n_min, double n_max, int k, double Q) : k_(k), Q
       kernel.y_center, kPreciseTarget));
   kernel.k_degree = coef.degree;
   kernel.coef_k = coef.coefficients;
+  // Up to n_max = 2^16 n_min: the fit's check sums its series in double, within 2^-53 n_max /
+  // n_min of coef at n_min (relative), which must stay far below the target.
+  kernel.in_n = kernel.in_n && n_max <= 0x1p16 * n_min;
+  if (kernel.in_n) {
+    // coef = slope n + C(n), slope the secant's: C, a small part of coef, is not worth
+    // centering. Kept where it takes no more operations than the reciprocal, its Newton step,
+    // y - y_center and n K(.), else the kernel keeps those.
+    const auto coef_of = [&](Real n) { return Real(ref::coef_exact(double(n), k, Q)); };
+    const float slope = float((coef_of(n_max) - coef_of(n_min)) / (n_max - n_min));
+    const std::optional<FloatFit> coef_n =
+        fit_float(coef_of, n_min, n_max, 0, kPreciseTarget, slope);
+    kernel.in_n = coef_n && coef_n->degree + 1 <= coef.degree + 5;
+    if (kernel.in_n) {
+      kernel.coef_n_slope = coef_n->slope;
+      kernel.coef_n_degree = coef_n->degree;
+      kernel.coef_n = coef_n->coefficients;
+    }
+  }
   kernel.k = k;
   // The fast variant: the same c^2 and coef (low degrees either way, and its peak the
   // precise one's), G and R to its target, the power in float.

@@ -599,16 +599,17 @@ TEST(LobeSetup, RefusesAMaterialNoFitMeets) {
 // the kernel's rounding, not the compiler's: the test is compiled without contraction),
 // against the functions they stand for, on 4097 points of their intervals, for the grid's and
 // random materials (planted: the fits' target 2^-22 - 2.02 times this one; measured 0.987),
-// and c^2 as a line with FMA where the setup kept it (planted: its slope's low part dropped).
+// and c^2 as a line and coef as a polynomial in n with FMA where the setup kept them
+// (planted: the slope's low part dropped; coef's slope rounded to bfloat16).
 TEST(PerLaneFits, MeetTheirTargetFusedAndUnfused) {
   constexpr double kTarget = 0x1p-23;
   double worst = 0;
-  int linear = 0;
+  int in_n = 0;
   std::vector<PerLaneCase> materials = per_lane_materials(60, 2029);
-  // The benchmark's gloss maps (n in [500, 2000]) take c^2 as a line at k = 3 and 5.
-  for (int k : {3, 5}) {
+  // The benchmark's gloss maps (n in [500, 2000]) take the forms in n at every k it runs.
+  for (int k : {1, 3, 5}) {
     materials.push_back({k, 0.5, 500, 2000});
-    EXPECT_TRUE(PerLaneLobe(500, 2000, k, 0.5).kernel().c_squared_linear) << "k = " << k;
+    EXPECT_TRUE(PerLaneLobe(500, 2000, k, 0.5).kernel().in_n) << "k = " << k;
   }
   for (const PerLaneCase& c : materials) {
     const PerLaneLobe lobe(c.n_min, c.n_max, c.k, c.Q);
@@ -637,16 +638,23 @@ TEST(PerLaneFits, MeetTheirTargetFusedAndUnfused) {
            const double half_sine = std::sin(std::sqrt(v) / 2);
            return v < 1e-30 ? 0.5 : 2 * half_sine * half_sine / v;
          }}};
-    // c^2 = (slope + slope_lo) n + h_1 with FMA where the setup kept it, against c^2 itself.
-    if (kernel.c_squared_linear) {
-      ++linear;
+    // With FMA where the setup kept them, against c^2 and coef themselves:
+    // c^2 = (slope + slope_lo) n + h_1 and coef = coef_slope n + C(n).
+    if (kernel.in_n) {
+      ++in_n;
       for (int j = 0; j <= 4096; ++j) {
         const float n = float(c.n_min + (c.n_max - c.n_min) * j / 4096);
-        const float value = std::fma(kernel.c_squared_slope, n,
-                                     std::fma(kernel.c_squared_slope_lo, n, kernel.h[1]));
+        const float c_squared = std::fma(kernel.c_squared_slope, n,
+                                         std::fma(kernel.c_squared_slope_lo, n, kernel.h[1]));
         const double theta_n = ref::acos_of_root(c.Q, double(n));
         const double exact = theta_k * theta_k / (theta_n * theta_n);
-        worst = std::max(worst, std::fabs(value - exact) / exact);
+        worst = std::max(worst, std::fabs(c_squared - exact) / exact);
+        float coef = kernel.coef_n[std::size_t(kernel.coef_n_degree)];
+        for (int i = kernel.coef_n_degree; i-- > 0;)
+          coef = std::fma(coef, n, kernel.coef_n[std::size_t(i)]);
+        coef = std::fma(kernel.coef_n_slope, n, coef);
+        const double coef_exact = ref::coef_exact(double(n), c.k, c.Q);
+        worst = std::max(worst, std::fabs(coef - coef_exact) / coef_exact);
       }
     }
     for (const Fit& fit : fits) {
@@ -665,8 +673,8 @@ TEST(PerLaneFits, MeetTheirTargetFusedAndUnfused) {
       }
     }
   }
-  std::printf("largest error of a per-lane fit: %.3g of its target; c^2 a line in %d of %zu\n",
-              worst / kTarget, linear, materials.size());
+  std::printf("largest error of a per-lane fit: %.3g of its target; in n in %d of %zu\n",
+              worst / kTarget, in_n, materials.size());
   EXPECT_LE(worst, kTarget);
 }
 

@@ -18,7 +18,7 @@
 namespace kutlog::detail {
 
 // PerLaneLobe's array loop, on the instance of PreparedPerLaneLobe that matches the kernel.
-template <class Arch, bool kLinearCSquared>
+template <class Arch, bool kInN>
 void per_lane_instance(const PerLaneKernel& kernel, bool normalized, const float* t,
                        const float* n, float* out, std::size_t count) {
   const auto run = [&](const auto& lobe) { map_arrays<Arch, 2>(lobe, {t, n}, out, count, 1.0f); };
@@ -27,16 +27,16 @@ void per_lane_instance(const PerLaneKernel& kernel, bool normalized, const float
   constexpr int kFastDegree = PerLaneKernel::kFastBaseDegree;
   constexpr int kPreciseDegree = PerLaneKernel::kPreciseBaseDegree;
   if (kernel.r_degree == kFastDegree)
-    return run(PreparedPerLaneLobe<Arch, Power::in_float, kFastDegree, kLinearCSquared>(
+    return run(PreparedPerLaneLobe<Arch, Power::in_float, kFastDegree, kInN>(
         kernel, normalized));
   if (kernel.power == Power::in_float)
-    return run(PreparedPerLaneLobe<Arch, Power::in_float, kPreciseDegree, kLinearCSquared>(
+    return run(PreparedPerLaneLobe<Arch, Power::in_float, kPreciseDegree, kInN>(
         kernel, normalized));
   if constexpr (simd::has_fused_fma<Arch>)
     if (kernel.power == Power::compensated)
-      return run(PreparedPerLaneLobe<Arch, Power::compensated, kPreciseDegree, kLinearCSquared>(
+      return run(PreparedPerLaneLobe<Arch, Power::compensated, kPreciseDegree, kInN>(
           kernel, normalized));
-  run(PreparedPerLaneLobe<Arch, Power::in_double, kPreciseDegree, kLinearCSquared>(kernel,
+  run(PreparedPerLaneLobe<Arch, Power::in_double, kPreciseDegree, kInN>(kernel,
                                                                                     normalized));
 }
 template <class Arch>
@@ -44,7 +44,7 @@ void per_lane_array(const PerLaneKernel& kernel, bool normalized, const float* t
                     float* out, std::size_t count) {
   // The line's bound holds with a fused multiply-add only (src/per_lane_lobe.cpp).
   if constexpr (simd::has_fused_fma<Arch>)
-    if (kernel.c_squared_linear)
+    if (kernel.in_n)
       return per_lane_instance<Arch, true>(kernel, normalized, t, n, out, count);
   per_lane_instance<Arch, false>(kernel, normalized, t, n, out, count);
 }

@@ -170,16 +170,17 @@ using FastScalarPieces = PiecewisePolynomial<float, 2>;
 // PerLaneLobe's: c^2 = n H(1/n - y_center), coef = n K(.), acos(t)^2 = w G(w), v = c^2 acos(t)^2
 // and F = (1 - v R(v))^k, 0 where v >= v_cut. At w_limit every lane is past its cut-off: the
 // SIMD kernel clamps w there (t below needs no test of its own), the scalar one returns 0.
-// Where H is linear, c^2 = (c_squared_slope + c_squared_slope_lo) n + h[1] with FMA (the
-// same line uncentered, checked to meet H's target): the power's chain then waits for no
-// reciprocal. The scalar path takes it too.
+// Where both also meet their targets as polynomials in n (in_n; FMA archs), the kernel takes
+// no reciprocal: c^2 = (c_squared_slope + c_squared_slope_lo) n + h[1], H's line uncentered,
+// and coef = coef_n_slope n + C(n), C's coefficients coef_n. The scalar path takes them too.
 struct PerLaneKernel {
   static constexpr int kMaxDegree = 20;
   using Coefficients = std::array<float, kMaxDegree + 1>;
   float n_min = 1, n_max = 1, y_center = 0, v_cut = 0, w_limit = 0;
   int k = 1, h_degree = 0, k_degree = 0, g_degree = 0, r_degree = 0;
-  bool c_squared_linear = false;
-  float c_squared_slope = 0, c_squared_slope_lo = 0;
+  bool in_n = false;
+  float c_squared_slope = 0, c_squared_slope_lo = 0, coef_n_slope = 0;
+  int coef_n_degree = 0;
   // Where the SIMD kernel takes the power: in float lanes (fast, and precise at k = 1: the
   // base is rounded once, as in double); in float lanes with the base's rounding carried
   // beside it (precise at small k, FMA archs); else in double lanes.
@@ -187,7 +188,7 @@ struct PerLaneKernel {
   Power power = Power::in_double;
   // R's degree by variant: R is the same for every material, so the SIMD kernels unroll it.
   static constexpr int kPreciseBaseDegree = 4, kFastBaseDegree = 3;
-  Coefficients h{}, coef_k{}, g{}, r{};
+  Coefficients h{}, coef_k{}, g{}, r{}, coef_n{};
 
   // The SIMD kernel's formulas in double, rounded once.
   float evaluate(float t, float n, bool normalized) const noexcept {
@@ -197,15 +198,18 @@ struct PerLaneKernel {
     if (w >= double(w_limit)) return 0.0f;
     const double n_clamped = double(n < n_min ? n_min : n > n_max ? n_max : n);
     const double y_offset = 1.0 / n_clamped - double(y_center);
-    const double c_squared = c_squared_linear
-                                 ? (double(c_squared_slope) + double(c_squared_slope_lo)) *
-                                           n_clamped + double(h[1])
-                                 : n_clamped * horner(h, h_degree, y_offset);
+    const double c_squared = in_n ? (double(c_squared_slope) + double(c_squared_slope_lo)) *
+                                            n_clamped + double(h[1])
+                                  : n_clamped * horner(h, h_degree, y_offset);
     const double v = c_squared * (w * horner(g, g_degree, w));
     if (v >= double(v_cut)) return 0.0f;
     // In [0, 1], as in the SIMD kernel (kutlog/simd/lobe.hpp).
     const double value = detail::integer_power(1.0 - v * horner(r, r_degree, v), k);
-    return float(normalized ? value * (n_clamped * horner(coef_k, k_degree, y_offset)) : value);
+    if (!normalized) return float(value);
+    const double coef = in_n ? double(coef_n_slope) * n_clamped +
+                                   horner(coef_n, coef_n_degree, n_clamped)
+                             : n_clamped * horner(coef_k, k_degree, y_offset);
+    return float(value * coef);
   }
 
  private:

@@ -133,36 +133,37 @@ class PreparedLobe {
 // A PerLaneKernel with its constants broadcast once: F(t; n) per lane (kutlog/lobe.hpp).
 // kPower must be the kernel's power or in_double (slower, within the precise bound);
 // compensated needs a fused multiply-add. kBaseDegree must be the kernel's r_degree;
-// kLinearCSquared, the kernel's c_squared_linear, needs one too (a compile-time choice: as a
-// branch it cost AVX2 a tenth of its rate).
+// kInN, the kernel's in_n, needs one too (a compile-time choice: as a branch the line of c^2
+// cost AVX2 a tenth of its rate).
 template <class Arch, PerLaneKernel::Power kPower = PerLaneKernel::Power::in_double,
-          int kBaseDegree = PerLaneKernel::kPreciseBaseDegree, bool kLinearCSquared = false>
+          int kBaseDegree = PerLaneKernel::kPreciseBaseDegree, bool kInN = false>
 class PreparedPerLaneLobe {
  public:
   using F = floats<Arch>;
 
   PreparedPerLaneLobe(const PerLaneKernel& kernel, bool normalized)
       : kernel_(kernel), normalized_(normalized), k_(float(kernel.k)),
-        c_squared_slope_(kernel.c_squared_slope), c_squared_slope_lo_(kernel.c_squared_slope_lo) {
+        c_squared_slope_(kernel.c_squared_slope), c_squared_slope_lo_(kernel.c_squared_slope_lo),
+        coef_n_slope_(kernel.coef_n_slope) {
     for (std::size_t i = 0; i < h_.size(); ++i)
       h_[i] = F(kernel.h[i]), coef_k_[i] = F(kernel.coef_k[i]), g_[i] = F(kernel.g[i]),
-      r_[i] = F(kernel.r[i]);
+      r_[i] = F(kernel.r[i]), coef_n_[i] = F(kernel.coef_n[i]);
   }
 
   [[gnu::always_inline]] F operator()(F t, F n) const {
     // max(n_min, n) and min(n_max, .) in this order keep NaN.
     const F n_clamped = xsimd::min(F(kernel_.n_max), xsimd::max(F(kernel_.n_min), n));
-    F y = xsimd::reciprocal(n_clamped);  // 12 or 14 bits, refined by one Newton step
-    y = mul_add(y, neg_mul_add(n_clamped, y, F(1.0f)), y);
-    const F y_offset = y - F(kernel_.y_center);
-    F c_squared;
-    if constexpr (kLinearCSquared) {
+    F c_squared, y_offset;
+    if constexpr (kInN) {
       static_assert(has_fused_fma<Arch>, "the line is bounded for one rounding");
       const F low = mul_add(c_squared_slope_lo_, n_clamped, h_[1]);
       c_squared = mul_add(c_squared_slope_, n_clamped, low);
-    }
-    else
+    } else {
+      F y = xsimd::reciprocal(n_clamped);  // 12 or 14 bits, refined by one Newton step
+      y = mul_add(y, neg_mul_add(n_clamped, y, F(1.0f)), y);
+      y_offset = y - F(kernel_.y_center);
       c_squared = n_clamped * horner(y_offset, h_, kernel_.h_degree);
+    }
     // min(w_limit, .) keeps NaN; past w_limit every lane's v >= v_cut.
     const F w = xsimd::min(F(kernel_.w_limit), F(1.0f) - xsimd::min(F(1.0f), t));
     const F v = c_squared * (w * horner(w, g_, kernel_.g_degree));
@@ -180,7 +181,11 @@ class PreparedPerLaneLobe {
       value = power_in_double(v, r);
     // 0 where v >= v_cut; a NaN t or n gives a NaN v, kept.
     if (!normalized_) return xsimd::select(v >= F(kernel_.v_cut), F(0.0f), value);
-    const F coef = n_clamped * horner(y_offset, coef_k_, kernel_.k_degree);
+    F coef;
+    if constexpr (kInN)
+      coef = mul_add(coef_n_slope_, n_clamped, horner(n_clamped, coef_n_, kernel_.coef_n_degree));
+    else
+      coef = n_clamped * horner(y_offset, coef_k_, kernel_.k_degree);
 #if XSIMD_WITH_AVX512F
     if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>)
       return _mm512_maskz_mul_ps(_mm512_cmp_ps_mask(v, F(kernel_.v_cut), _CMP_NGE_UQ), value,
@@ -234,8 +239,8 @@ class PreparedPerLaneLobe {
 
   const PerLaneKernel& kernel_;
   bool normalized_;
-  F k_, c_squared_slope_, c_squared_slope_lo_;
-  Batches h_, coef_k_, g_, r_;
+  F k_, c_squared_slope_, c_squared_slope_lo_, coef_n_slope_;
+  Batches h_, coef_k_, g_, r_, coef_n_;
 };
 
 // F_kutlog of the lobe whose precomputed kernel is given (Lobe::kernel(variant, normalization,
