@@ -33,6 +33,19 @@ inline constexpr bool has_fused_fma = false
     KUTLOG_ARCHS(KUTLOG_FUSED_FMA_OF);
 #undef KUTLOG_FUSED_FMA_OF
 
+// 0 where `cut`, else value (NaN where the comparison left it false). On SSE and AVX an
+// and-not of the comparison's mask: xsimd::select's blendv takes several micro-ops there.
+template <class Arch>
+inline floats<Arch> zero_where(xsimd::batch_bool<float, Arch> cut, floats<Arch> value) {
+#if XSIMD_WITH_AVX
+  if constexpr (std::is_base_of_v<xsimd::avx, Arch>) return _mm256_andnot_ps(cut, value);
+#endif
+#if XSIMD_WITH_SSE2
+  if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) return _mm_andnot_ps(cut, value);
+#endif
+  return xsimd::select(cut, floats<Arch>(0.0f), value);
+}
+
 // a * b + c, fused where the arch has FMA. xsimd 8.1 has no AVX-512 fma: its xsimd::fma there
 // is an unfused multiply and add, so AVX-512 gets the intrinsic here.
 template <class T, class Arch>

@@ -56,7 +56,7 @@ class PreparedLobe {
     if constexpr (!kClamped) return float_form(t);
     if (kDegree >= 0 || kernel_.form == LobeKernel::Form::polynomial)
       return detail::clamp_zero_to(float_form(t), scale_);
-    return xsimd::select(t <= t_cut_, F(0.0f), detail::clamp_zero_to(double_form(t), scale_));
+    return zero_where(t <= t_cut_, detail::clamp_zero_to(double_form(t), scale_));
   }
 
  private:
@@ -91,7 +91,7 @@ class PreparedLobe {
     const auto [product, product_error] = two_product(r, s);
     const auto [q, q_error] = two_sum(q_[0], product);
     const F value = scale_ + neg_mul_add(w, q, neg_mul_add(w, q_error + product_error, scale_lo_));
-    return xsimd::select(t <= t_cut_, F(0.0f), value);
+    return zero_where(t <= t_cut_, value);
   }
 
   // scale - w q, or scale + (scale_lo - w q), where t > t_cut or NaN, else 0.
@@ -106,7 +106,7 @@ class PreparedLobe {
 #endif
     const F value = finish() == LobeFinish::split ? scale_ + neg_mul_add(w, q, scale_lo_)
                                                   : neg_mul_add(w, q, scale_);
-    return xsimd::select(t <= t_cut_, F(0.0f), value);
+    return zero_where(t <= t_cut_, value);
   }
 
   // scale (1 - w q(w))^k in double lanes, one rounding to float.
@@ -180,7 +180,7 @@ class PreparedPerLaneLobe {
     else
       value = power_in_double(v, r);
     // 0 where v >= v_cut; a NaN t or n gives a NaN v, kept.
-    if (!normalized_) return xsimd::select(v >= F(kernel_.v_cut), F(0.0f), value);
+    if (!normalized_) return zero_where(v >= F(kernel_.v_cut), value);
     F coef;
     if constexpr (kInN)
       coef = mul_add(coef_n_slope_, n_clamped, horner(n_clamped, coef_n_, kernel_.coef_n_degree));
@@ -191,7 +191,7 @@ class PreparedPerLaneLobe {
       return _mm512_maskz_mul_ps(_mm512_cmp_ps_mask(v, F(kernel_.v_cut), _CMP_NGE_UQ), value,
                                  coef);
 #endif
-    return xsimd::select(v >= F(kernel_.v_cut), F(0.0f), value * coef);
+    return zero_where(v >= F(kernel_.v_cut), value * coef);
   }
 
  private:
@@ -296,8 +296,8 @@ class PreparedPowerPoly {
     const I exponent = xsimd::bitwise_cast<I>(shifted) << 23;
     const F value = xsimd::bitwise_cast<F>(xsimd::bitwise_cast<I>(power) + exponent);
     if constexpr (kDecomposed)  // the exponent's bits lost NaN
-      return xsimd::select(t <= t_zero_, F(0.0f), xsimd::select(xsimd::isnan(t), t, value));
-    return xsimd::select(t <= t_zero_, F(0.0f), value);
+      return zero_where(t <= t_zero_, xsimd::select(xsimd::isnan(t), t, value));
+    return zero_where(t <= t_zero_, value);
   }
 
  private:
