@@ -29,8 +29,7 @@ inline floats<Arch> blinn_cosine(const Vector3<Arch>& normal, const Vector3<Arch
   const Vector3<Arch> sum{to_light.x + to_viewer.x, to_light.y + to_viewer.y,
                           to_light.z + to_viewer.z};
   const F length_squared = dot(sum, sum);
-  return xsimd::select(length_squared == F(0.0f), F(0.0f),
-                       dot(normal, sum) / xsimd::sqrt(length_squared));
+  return zero_where(length_squared == F(0.0f), dot(normal, sum) / xsimd::sqrt(length_squared));
 }
 
 // R.V with R = 2 (N.L) N - L, from N.L.
