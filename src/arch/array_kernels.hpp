@@ -27,22 +27,20 @@ void per_lane_instance(const PerLaneKernel& kernel, bool normalized, const float
   constexpr int kFastDegree = PerLaneKernel::kFastBaseDegree;
   constexpr int kPreciseDegree = PerLaneKernel::kPreciseBaseDegree;
   if (kernel.r_degree == kFastDegree)
-    return run(PreparedPerLaneLobe<Arch, Power::in_float, kFastDegree, kInN>(
-        kernel, normalized));
+    return run(PreparedPerLaneLobe<Arch, Power::in_float, kFastDegree, kInN>(kernel, normalized));
   if (kernel.power == Power::in_float)
-    return run(PreparedPerLaneLobe<Arch, Power::in_float, kPreciseDegree, kInN>(
-        kernel, normalized));
+    return run(
+        PreparedPerLaneLobe<Arch, Power::in_float, kPreciseDegree, kInN>(kernel, normalized));
   if constexpr (simd::has_fused_fma<Arch>)
     if (kernel.power == Power::compensated)
       return run(PreparedPerLaneLobe<Arch, Power::compensated, kPreciseDegree, kInN>(
           kernel, normalized));
-  run(PreparedPerLaneLobe<Arch, Power::in_double, kPreciseDegree, kInN>(kernel,
-                                                                                    normalized));
+  run(PreparedPerLaneLobe<Arch, Power::in_double, kPreciseDegree, kInN>(kernel, normalized));
 }
 template <class Arch>
 void per_lane_array(const PerLaneKernel& kernel, bool normalized, const float* t, const float* n,
                     float* out, std::size_t count) {
-  // The line's bound holds with a fused multiply-add only (src/per_lane_lobe.cpp).
+  // The forms in n are bounded for a fused multiply-add only (src/per_lane_lobe.cpp).
   if constexpr (simd::has_fused_fma<Arch>)
     if (kernel.in_n)
       return per_lane_instance<Arch, true>(kernel, normalized, t, n, out, count);

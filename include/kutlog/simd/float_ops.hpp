@@ -33,7 +33,7 @@ inline constexpr bool has_fused_fma = false
     KUTLOG_ARCHS(KUTLOG_FUSED_FMA_OF);
 #undef KUTLOG_FUSED_FMA_OF
 
-// 0 where `cut`, else value (NaN where the comparison left it false). On SSE and AVX an
+// 0 where `cut`, else value (a comparison false for NaN keeps a NaN value). On SSE and AVX an
 // and-not of the comparison's mask: xsimd::select's blendv takes several micro-ops there.
 template <class Arch>
 inline floats<Arch> zero_where(xsimd::batch_bool<float, Arch> cut, floats<Arch> value) {
