@@ -82,6 +82,17 @@ std::optional<FloatFit> fit_float(const std::function<Real(Real)>& g, double lo,
     grid[j] = double(float(lo + (hi - lo) * j / kGridIntervals));
   const std::vector<double> exact = series.values_at(grid);
   const int max_degree = std::min(PerLaneKernel::kMaxDegree, int(series.coefficients.size()) - 1);
+  // With a slope, degree 0 first: the series' own line, its slope in place of the one given
+  // (the secant's would leave their difference's term out), its rounding moved into the
+  // constant at the middle of [lo, hi].
+  if (slope != 0) {
+    const std::vector<Real> line = series.monomials(1, center);
+    fit.slope = float(line[1]);
+    fit.coefficients[0] = float(line[0] - line[1] * Real(center) +
+                                (line[1] - Real(fit.slope)) * Real(0.5 * (lo + hi)));
+    if (meets(fit, grid, exact, center, allowed)) return fit;
+    fit.slope = slope;
+  }
   for (fit.degree = 1; fit.degree <= max_degree; ++fit.degree) {
     std::vector<Real> q = series.monomials(fit.degree, center);
     q[0] -= Real(slope) * Real(center);
@@ -130,24 +141,13 @@ const FloatFit& base_fit(Variant variant) {
   return variant == Variant::fast ? fast : precise;
 }
 
-}  // namespace
-
-PerLaneLobe::PerLaneLobe(double n_min, double n_max, int k, double Q) : k_(k), Q_(Q) {
-  ref::validate_exponent(n_min, "n_min");
-  ref::validate_exponent(n_max, "n_max");
-  ref::validate_parameters(n_min, k, Q);  // k and Q
-  detail::require_runnable_arch();
-  if (!(n_min >= k))
-    throw std::invalid_argument("kutlog: n_min = " + std::to_string(n_min) +
-                                " is invalid; a per-lane lobe needs n_min >= k = " +
-                                std::to_string(k));
-  if (!(n_max >= n_min))
-    throw std::invalid_argument("kutlog: n_max = " + std::to_string(n_max) +
-                                " is invalid; n_max must be >= n_min = " + std::to_string(n_min));
-  if (!(n_max <= std::numeric_limits<float>::max()))
-    throw std::invalid_argument("kutlog: n_max = " + std::to_string(n_max) +
-                                " is invalid; the lanes' n are floats, n_max must be <= FLT_MAX");
-  PerLaneKernel& kernel = kernels_[int(Variant::precise)];
+// One variant's kernel: every polynomial fitted to the variant's target, so the fast one takes
+// the lowest degrees (at n in [500, 2000], coef = slope n + a constant) and its peak its own
+// bound (kPerLaneFastPeakError).
+PerLaneKernel fit_kernel(double n_min, double n_max, int k, double Q, Variant variant) {
+  const double target = variant == Variant::fast ? kFastTarget : kPreciseTarget;
+  PerLaneKernel kernel;
+  kernel.k = k;
   kernel.n_min = float(n_min);
   kernel.n_max = float(n_max);
   // Every lane's lobe fits inside the widest one, that of n_min: past its cut-off, w_max,
@@ -176,18 +176,20 @@ PerLaneLobe::PerLaneLobe(double n_min, double n_max, int k, double Q) : k_(k), Q
         const double theta_n = ref::acos_of_root(Q, double(1 / y));
         return Real(theta_k * theta_k) * y / Real(theta_n * theta_n);
       },
-      y_lo, y_hi, kernel.y_center, kPreciseTarget));
+      y_lo, y_hi, kernel.y_center, target));
   kernel.h_degree = h.degree;
   kernel.h = h.coefficients;
   if (h.degree == 1) {
-    // n H(1/n - y_center) = slope n + h_1, slope = h_0 - h_1 y_center in two floats (one
-    // would add its rounding, 2^-24 of c^2, to H's): with a fused multiply-add, rounded once.
-    // Kept where the line's own error plus that rounding meets H's target against c^2 on n
+    // n H(1/n - y_center) = slope n + h_1, slope = h_0 - h_1 y_center: with a fused
+    // multiply-add, rounded once. Precise, the slope is two floats (one would add its
+    // rounding, 2^-24 of c^2, to H's); fast, one (the SIMD kernel's c^2 is one multiply-add).
+    // Kept where the line's own error plus that rounding meets the target against c^2 on n
     // even and log-even over the range (the line's error is smooth; the rounding is bounded,
     // not sampled). Unfused, its three roundings could not leave H's error room.
     const double slope =
         double(h.coefficients[0]) - double(h.coefficients[1]) * double(kernel.y_center);
-    const float slope_hi = float(slope), slope_lo = float(slope - double(slope_hi));
+    const float slope_hi = float(slope);
+    const float slope_lo = variant == Variant::fast ? 0.0f : float(slope - double(slope_hi));
     const double intercept = double(h.coefficients[1]);
     constexpr int kGridIntervals = 512;
     bool meets_target = true;
@@ -200,7 +202,7 @@ PerLaneLobe::PerLaneLobe(double n_min, double n_max, int k, double Q) : k_(k), Q
         const double low = double(slope_lo) * x + intercept;
         const double line = double(slope_hi) * x + low;
         const double rounding = 0x1p-24 * (std::fabs(line) + std::fabs(low)) * (1 + 0x1p-20);
-        if (!(std::fabs(line - exact) + rounding <= kPreciseTarget * exact)) meets_target = false;
+        if (!(std::fabs(line - exact) + rounding <= target * exact)) meets_target = false;
       }
     kernel.in_n = meets_target;  // and coef in n below
     kernel.c_squared_slope = slope_hi;
@@ -208,7 +210,7 @@ PerLaneLobe::PerLaneLobe(double n_min, double n_max, int k, double Q) : k_(k), Q
   }
   const FloatFit coef = fit_or_refuse("coef / n", fit_float(
       [&](Real y) { return y * Real(ref::coef_exact(double(1 / y), k, Q)); }, y_lo, y_hi,
-      kernel.y_center, kPreciseTarget));
+      kernel.y_center, target));
   kernel.k_degree = coef.degree;
   kernel.coef_k = coef.coefficients;
   // Up to n_max = 2^16 n_min: the fit's check sums its series in double, within 2^-53 n_max /
@@ -220,8 +222,7 @@ PerLaneLobe::PerLaneLobe(double n_min, double n_max, int k, double Q) : k_(k), Q
     // y - y_center and n K(.), else the kernel keeps those.
     const auto coef_of = [&](Real n) { return Real(ref::coef_exact(double(n), k, Q)); };
     const float slope = float((coef_of(n_max) - coef_of(n_min)) / (n_max - n_min));
-    const std::optional<FloatFit> coef_n =
-        fit_float(coef_of, n_min, n_max, 0, kPreciseTarget, slope);
+    const std::optional<FloatFit> coef_n = fit_float(coef_of, n_min, n_max, 0, target, slope);
     kernel.in_n = coef_n && coef_n->degree + 1 <= coef.degree + 5;
     if (kernel.in_n) {
       kernel.coef_n_slope = coef_n->slope;
@@ -229,35 +230,49 @@ PerLaneLobe::PerLaneLobe(double n_min, double n_max, int k, double Q) : k_(k), Q
       kernel.coef_n = coef_n->coefficients;
     }
   }
-  kernel.k = k;
-  // The fast variant: the same c^2 and coef (low degrees either way, and its peak the
-  // precise one's), G and R to its target, the power in float.
-  kernels_[int(Variant::fast)] = kernel;
-  for (Variant variant : {Variant::precise, Variant::fast}) {
-    PerLaneKernel& of_variant = kernels_[int(variant)];
-    const double target = variant == Variant::fast ? kFastTarget : kPreciseTarget;
-    // theta^2 / w = (2 asin(sqrt(w/2)))^2 / w, analytic up to w = 2.
-    const FloatFit g = fit_or_refuse("acos(t)^2 / (1 - t)", fit_float(
-        [](Real w) {
-          if (w < 1e-30L) return Real(2);
-          const Real theta = 2 * std::asin(std::sqrt(w / 2));
-          return theta * theta / w;
-        },
-        0, w_max, 0, target));
-    of_variant.g_degree = g.degree;
-    of_variant.g = g.coefficients;
-    of_variant.r_degree = base_fit(variant).degree;
-    of_variant.r = base_fit(variant).coefficients;
-    // At k = 1 there is no power: the base in float, one fused multiply-add, is rounded once
-    // as in double (FMA archs; SSE4.1 adds its product's rounding, within the bound). Up to
-    // kCompensatedMaxK the power's own roundings, about k, stay within the epicenter bound.
-    using Power = PerLaneKernel::Power;
-    of_variant.power = variant == Variant::fast || k == 1 ? Power::in_float
-                       : k <= kCompensatedMaxK           ? Power::compensated
-                                                         : Power::in_double;
-    const double margin = variant == Variant::fast ? kFastCutMargin : kPreciseCutMargin;
-    of_variant.v_cut = float(double(kVCut) * (1 - margin));
-  }
+  // theta^2 / w = (2 asin(sqrt(w/2)))^2 / w, analytic up to w = 2.
+  const FloatFit g = fit_or_refuse("acos(t)^2 / (1 - t)", fit_float(
+      [](Real w) {
+        if (w < 1e-30L) return Real(2);
+        const Real theta = 2 * std::asin(std::sqrt(w / 2));
+        return theta * theta / w;
+      },
+      0, w_max, 0, target));
+  kernel.g_degree = g.degree;
+  kernel.g = g.coefficients;
+  kernel.r_degree = base_fit(variant).degree;
+  kernel.r = base_fit(variant).coefficients;
+  // At k = 1 there is no power: the base in float, one fused multiply-add, is rounded once
+  // as in double (FMA archs; SSE4.1 adds its product's rounding, within the bound). Up to
+  // kCompensatedMaxK the power's own roundings, about k, stay within the epicenter bound.
+  using Power = PerLaneKernel::Power;
+  kernel.power = variant == Variant::fast || k == 1 ? Power::in_float
+                 : k <= kCompensatedMaxK           ? Power::compensated
+                                                   : Power::in_double;
+  const double margin = variant == Variant::fast ? kFastCutMargin : kPreciseCutMargin;
+  kernel.v_cut = float(double(kVCut) * (1 - margin));
+  return kernel;
+}
+
+}  // namespace
+
+PerLaneLobe::PerLaneLobe(double n_min, double n_max, int k, double Q) : k_(k), Q_(Q) {
+  ref::validate_exponent(n_min, "n_min");
+  ref::validate_exponent(n_max, "n_max");
+  ref::validate_parameters(n_min, k, Q);  // k and Q
+  detail::require_runnable_arch();
+  if (!(n_min >= k))
+    throw std::invalid_argument("kutlog: n_min = " + std::to_string(n_min) +
+                                " is invalid; a per-lane lobe needs n_min >= k = " +
+                                std::to_string(k));
+  if (!(n_max >= n_min))
+    throw std::invalid_argument("kutlog: n_max = " + std::to_string(n_max) +
+                                " is invalid; n_max must be >= n_min = " + std::to_string(n_min));
+  if (!(n_max <= std::numeric_limits<float>::max()))
+    throw std::invalid_argument("kutlog: n_max = " + std::to_string(n_max) +
+                                " is invalid; the lanes' n are floats, n_max must be <= FLT_MAX");
+  for (Variant variant : {Variant::precise, Variant::fast})
+    kernels_[int(variant)] = fit_kernel(n_min, n_max, k, Q, variant);
 }
 
 }  // namespace kutlog

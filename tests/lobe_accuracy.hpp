@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "common/lobe_errors.hpp"
+#include "common/names.hpp"
 #include "common/ulp.hpp"
 #include "kutlog/accuracy.hpp"
 #include "kutlog/lobe.hpp"
@@ -24,6 +25,11 @@
 
 namespace kutlog {
 
+// PerLaneLobe's promise for its normalized peak against coef_exact(n) (kutlog/accuracy.hpp).
+constexpr double per_lane_peak_bound(Variant variant) {
+  return variant == Variant::fast ? kPerLaneFastPeakError : kPerLanePeakError;
+}
+
 inline std::vector<LobeCase> accuracy_grid() {
   std::vector<LobeCase> grid;
   for (int k = 1; k <= 5; ++k)
@@ -33,12 +39,12 @@ inline std::vector<LobeCase> accuracy_grid() {
 }
 
 // The largest errors one test measured, by bound of kutlog/accuracy.hpp (kLobeBounds' order:
-// precise, fast, per_lane, per_lane_fast; and the per-lane peak's). A test that sweeps enough to find the
-// worst case asserts that each bound is at most four times what it measured: a bound far
-// above every measurement has drifted from the code.
+// precise, fast, per_lane, per_lane_fast; and the per-lane peaks', by variant). A test that
+// sweeps enough to find the worst case asserts that each bound is at most four times what it
+// measured: a bound far above every measurement has drifted from the code.
 struct LargestErrors {
   std::array<double, std::size(kLobeBounds)> abs_error{}, epicenter_ulp{};
-  double per_lane_peak_error = 0;
+  std::array<double, 2> per_lane_peak_error{};  // by Variant
   double certificate_share = 0;  // the largest abs error measured over the certified one
   void expect_bounds_reached() const {
     if (certificate_share > 0)
@@ -51,8 +57,10 @@ struct LargestErrors {
         EXPECT_GE(epicenter_ulp[i], bound.max_epicenter_ulp() / 4)
             << bound.variant << ": a loose bound";
     }
-    if (per_lane_peak_error > 0)
-      EXPECT_GE(per_lane_peak_error, kPerLanePeakError / 4) << "per-lane peak: a loose bound";
+    for (Variant variant : {Variant::precise, Variant::fast})
+      if (per_lane_peak_error[int(variant)] > 0)
+        EXPECT_GE(per_lane_peak_error[int(variant)], per_lane_peak_bound(variant) / 4)
+            << "per-lane peak, " << variant_name(variant) << ": a loose bound";
   }
 };
 
@@ -245,7 +253,7 @@ inline std::vector<PerLaneCase> per_lane_materials(int random_count, unsigned se
 // past its cut-off, a third in the epicenter, a third just inside the cut-off. Asserts the
 // bound relative to each lane's peak, the measured epicenter bound in ulps of the value
 // returned, 0 <= out <= the lane's output at t = 1, and that output against the reference:
-// 1 unnormalized, within kPerLanePeakError of coef_exact(n) normalized. Adds its errors to
+// 1 unnormalized, within per_lane_peak_bound of coef_exact(n) normalized. Adds its errors to
 // `largest`.
 inline void expect_per_lane_within_bounds(const PerLaneCase& c, unsigned seed, std::size_t lanes,
                                           Variant variant = Variant::precise,
@@ -288,8 +296,8 @@ inline void expect_per_lane_within_bounds(const PerLaneCase& c, unsigned seed, s
       if (!(out[i] >= 0 && out[i] <= peak[i]) && outside++ == 0) first_outside = i;
     }
     if (normalization == Normalization::none) EXPECT_EQ(peak_error, 0.0) << "n = " << worst_peak_n;
-    EXPECT_LE(peak_error, kPerLanePeakError) << "n = " << worst_peak_n;
-    record_max("per_lane_peak_error", peak_error);
+    EXPECT_LE(peak_error, per_lane_peak_bound(variant)) << "n = " << worst_peak_n;
+    record_max(name + "_peak_error", peak_error);
     EXPECT_LE(errors.max_abs_error, bound.max_abs_error()) << "t = " << errors.worst_abs_input;
     if (bound.max_epicenter_ulp() > 0)
       EXPECT_LE(errors.max_epicenter_ulp, bound.max_epicenter_ulp())
@@ -301,7 +309,8 @@ inline void expect_per_lane_within_bounds(const PerLaneCase& c, unsigned seed, s
       double& epicenter_ulp = largest->epicenter_ulp[bound_index];
       abs_error = std::max(abs_error, errors.max_abs_error);
       epicenter_ulp = std::max(epicenter_ulp, errors.max_epicenter_ulp);
-      largest->per_lane_peak_error = std::max(largest->per_lane_peak_error, peak_error);
+      double& largest_peak_error = largest->per_lane_peak_error[int(variant)];
+      largest_peak_error = std::max(largest_peak_error, peak_error);
     }
     EXPECT_EQ(errors.max_where_zero, 0.0f) << "at t = " << errors.max_where_zero_input;
     EXPECT_EQ(outside, 0u) << "e.g. t = " << t[first_outside] << ", n = " << n[first_outside]

@@ -315,7 +315,7 @@ TEST_P(LobePerArch, HugeExponentsKeepTheDataRule) {
       for (int i = 3; i < 6; ++i) EXPECT_EQ(out[i], 0.0f) << "n = " << n[i] << ", t = " << t[i];
       lobe.eval(t.data(), n.data(), out.data(), 2, variant, Normalization::exact_coef);
       for (int i = 0; i < 2; ++i)
-        EXPECT_NEAR(out[i] / ref::coef_exact(n[i], c.k, c.Q), 1, kPerLanePeakError)
+        EXPECT_NEAR(out[i] / ref::coef_exact(n[i], c.k, c.Q), 1, per_lane_peak_bound(variant))
             << "n = " << n[i];
     }
   }
@@ -594,88 +594,98 @@ TEST(LobeSetup, RefusesAMaterialNoFitMeets) {
   EXPECT_NO_THROW(Lobe(1000, 3, 0.5));
 }
 
-// PerLaneLobe's fits meet their 2^-23 in the arithmetic of every arch: Horner's rule in float
+// PerLaneLobe's fits meet their targets (2^-23 precise, 2^-19 fast) in the arithmetic of
+// every arch: Horner's rule in float
 // with each step fused (AVX2, AVX-512, NEON) and with a product and a sum (SSE4.1; this is
 // the kernel's rounding, not the compiler's: the test is compiled without contraction),
 // against the functions they stand for, on 4097 points of their intervals, for the grid's and
 // random materials (planted: the fits' target 2^-22 - 2.02 times this one; measured 0.987),
 // and c^2 as a line and coef as a polynomial in n with FMA where the setup kept them
-// (planted: the slope's low part dropped; coef's slope rounded to bfloat16).
+// (planted: the slope's low part dropped; coef's slope rounded to bfloat16; the fast
+// variant's coef constant rounded to bfloat16).
 TEST(PerLaneFits, MeetTheirTargetFusedAndUnfused) {
-  constexpr double kTarget = 0x1p-23;
-  double worst = 0;
+  double worst = 0;  // relative error over the variant's target
   int in_n = 0;
   std::vector<PerLaneCase> materials = per_lane_materials(60, 2029);
   // The benchmark's gloss maps (n in [500, 2000]) take the forms in n at every k it runs.
   for (int k : {1, 3, 5}) {
     materials.push_back({k, 0.5, 500, 2000});
-    EXPECT_TRUE(PerLaneLobe(500, 2000, k, 0.5).kernel().in_n) << "k = " << k;
+    const PerLaneLobe lobe(500, 2000, k, 0.5);
+    EXPECT_TRUE(lobe.kernel(Variant::precise).in_n) << "k = " << k;
+    // Fast: c^2 and coef one multiply-add each.
+    EXPECT_TRUE(lobe.kernel(Variant::fast).in_n) << "k = " << k;
+    EXPECT_EQ(lobe.kernel(Variant::fast).coef_n_degree, 0) << "k = " << k;
+    EXPECT_EQ(lobe.kernel(Variant::fast).c_squared_slope_lo, 0.0f) << "k = " << k;
   }
   for (const PerLaneCase& c : materials) {
     const PerLaneLobe lobe(c.n_min, c.n_max, c.k, c.Q);
-    const PerLaneKernel& kernel = lobe.kernel();
-    const double theta_k = ref::acos_of_root(c.Q, c.k);
-    const double w_max = std::max(1e-6, 1 - std::cos(ref::KutlogLobe(c.n_min, c.k, c.Q).cutoff_angle()));
-    struct Fit {
-      const PerLaneKernel::Coefficients& coefficients;
-      int degree;
-      double lo, hi, center;
-      std::function<double(double)> g;
-    };
-    const double y_lo = 1 / c.n_max, y_hi = 1 / c.n_min;
-    const Fit fits[] = {
-        {kernel.h, kernel.h_degree, y_lo, y_hi, kernel.y_center,
-         [&](double y) {
-           const double theta_n = ref::acos_of_root(c.Q, 1 / y);
-           return theta_k * theta_k * y / (theta_n * theta_n);
-         }},
-        {kernel.g, kernel.g_degree, 0, w_max, 0,
-         [](double w) {
-           const double theta = 2 * std::asin(std::sqrt(w / 2));
-           return w < 1e-30 ? 2.0 : theta * theta / w;
-         }},
-        {kernel.r, kernel.r_degree, 0, kernel.v_cut, 0, [](double v) {
-           const double half_sine = std::sin(std::sqrt(v) / 2);
-           return v < 1e-30 ? 0.5 : 2 * half_sine * half_sine / v;
-         }}};
-    // With FMA where the setup kept them, against c^2 and coef themselves:
-    // c^2 = (slope + slope_lo) n + h_1 and coef = coef_slope n + C(n).
-    if (kernel.in_n) {
-      ++in_n;
-      for (int j = 0; j <= 4096; ++j) {
-        const float n = float(c.n_min + (c.n_max - c.n_min) * j / 4096);
-        const float c_squared = std::fma(kernel.c_squared_slope, n,
-                                         std::fma(kernel.c_squared_slope_lo, n, kernel.h[1]));
-        const double theta_n = ref::acos_of_root(c.Q, double(n));
-        const double exact = theta_k * theta_k / (theta_n * theta_n);
-        worst = std::max(worst, std::fabs(c_squared - exact) / exact);
-        float coef = kernel.coef_n[std::size_t(kernel.coef_n_degree)];
-        for (int i = kernel.coef_n_degree; i-- > 0;)
-          coef = std::fma(coef, n, kernel.coef_n[std::size_t(i)]);
-        coef = std::fma(kernel.coef_n_slope, n, coef);
-        const double coef_exact = ref::coef_exact(double(n), c.k, c.Q);
-        worst = std::max(worst, std::fabs(coef - coef_exact) / coef_exact);
-      }
-    }
-    for (const Fit& fit : fits) {
-      if (!(fit.hi > fit.lo)) continue;  // one point: its value
-      for (int j = 0; j <= 4096; ++j) {
-        const double x = fit.lo + (fit.hi - fit.lo) * j / 4096;
-        const float s = float(x) - float(fit.center);
-        float fused = fit.coefficients[std::size_t(fit.degree)], unfused = fused;
-        for (int i = fit.degree; i-- > 0;) {
-          fused = std::fma(fused, s, fit.coefficients[std::size_t(i)]);
-          unfused = unfused * s + fit.coefficients[std::size_t(i)];
+    for (Variant variant : {Variant::precise, Variant::fast}) {
+      const double target = variant == Variant::fast ? 0x1p-19 : 0x1p-23;
+      const PerLaneKernel& kernel = lobe.kernel(variant);
+      const double theta_k = ref::acos_of_root(c.Q, c.k);
+      const double w_max =
+          std::max(1e-6, 1 - std::cos(ref::KutlogLobe(c.n_min, c.k, c.Q).cutoff_angle()));
+      struct Fit {
+        const PerLaneKernel::Coefficients& coefficients;
+        int degree;
+        double lo, hi, center;
+        std::function<double(double)> g;
+      };
+      const double y_lo = 1 / c.n_max, y_hi = 1 / c.n_min;
+      const Fit fits[] = {
+          {kernel.h, kernel.h_degree, y_lo, y_hi, kernel.y_center,
+           [&](double y) {
+             const double theta_n = ref::acos_of_root(c.Q, 1 / y);
+             return theta_k * theta_k * y / (theta_n * theta_n);
+           }},
+          {kernel.g, kernel.g_degree, 0, w_max, 0,
+           [](double w) {
+             const double theta = 2 * std::asin(std::sqrt(w / 2));
+             return w < 1e-30 ? 2.0 : theta * theta / w;
+           }},
+          {kernel.r, kernel.r_degree, 0, kernel.v_cut, 0, [](double v) {
+             const double half_sine = std::sin(std::sqrt(v) / 2);
+             return v < 1e-30 ? 0.5 : 2 * half_sine * half_sine / v;
+           }}};
+      // With FMA where the setup kept them, against c^2 and coef themselves:
+      // c^2 = (slope + slope_lo) n + h_1 and coef = coef_slope n + C(n).
+      if (kernel.in_n) {
+        ++in_n;
+        for (int j = 0; j <= 4096; ++j) {
+          const float n = float(c.n_min + (c.n_max - c.n_min) * j / 4096);
+          const float c_squared = std::fma(kernel.c_squared_slope, n,
+                                           std::fma(kernel.c_squared_slope_lo, n, kernel.h[1]));
+          const double theta_n = ref::acos_of_root(c.Q, double(n));
+          const double exact = theta_k * theta_k / (theta_n * theta_n);
+          worst = std::max(worst, std::fabs(c_squared - exact) / exact / target);
+          float coef = kernel.coef_n[std::size_t(kernel.coef_n_degree)];
+          for (int i = kernel.coef_n_degree; i-- > 0;)
+            coef = std::fma(coef, n, kernel.coef_n[std::size_t(i)]);
+          coef = std::fma(kernel.coef_n_slope, n, coef);
+          const double coef_exact = ref::coef_exact(double(n), c.k, c.Q);
+          worst = std::max(worst, std::fabs(coef - coef_exact) / coef_exact / target);
         }
-        const double exact = fit.g(x);
-        for (float value : {fused, unfused})
-          worst = std::max(worst, std::fabs(value - exact) / std::fabs(exact));
+      }
+      for (const Fit& fit : fits) {
+        if (!(fit.hi > fit.lo)) continue;  // one point: its value
+        for (int j = 0; j <= 4096; ++j) {
+          const double x = fit.lo + (fit.hi - fit.lo) * j / 4096;
+          const float s = float(x) - float(fit.center);
+          float fused = fit.coefficients[std::size_t(fit.degree)], unfused = fused;
+          for (int i = fit.degree; i-- > 0;) {
+            fused = std::fma(fused, s, fit.coefficients[std::size_t(i)]);
+            unfused = unfused * s + fit.coefficients[std::size_t(i)];
+          }
+          const double exact = fit.g(x);
+          for (float value : {fused, unfused})
+            worst = std::max(worst, std::fabs(value - exact) / std::fabs(exact) / target);
+        }
       }
     }
   }
-  std::printf("largest error of a per-lane fit: %.3g of its target; in n in %d of %zu\n",
-              worst / kTarget, in_n, materials.size());
-  EXPECT_LE(worst, kTarget);
+  std::printf("largest error of a per-lane fit: %.3g of its target; in n in %d of %zu\n", worst,
+              in_n, 2 * materials.size());
+  EXPECT_LE(worst, 1.0);
 }
 
 // Interpolation at N Chebyshev nodes recovers a sum of T_j(u) of degree below N exactly: the

@@ -24,18 +24,16 @@ void per_lane_instance(const PerLaneKernel& kernel, bool normalized, const float
   const auto run = [&](const auto& lobe) { map_arrays<Arch, 2>(lobe, {t, n}, out, count, 1.0f); };
   using simd::PreparedPerLaneLobe;
   using Power = PerLaneKernel::Power;
-  constexpr int kFastDegree = PerLaneKernel::kFastBaseDegree;
-  constexpr int kPreciseDegree = PerLaneKernel::kPreciseBaseDegree;
-  if (kernel.r_degree == kFastDegree)
-    return run(PreparedPerLaneLobe<Arch, Power::in_float, kFastDegree, kInN>(kernel, normalized));
+  if (kernel.r_degree == PerLaneKernel::kFastBaseDegree)
+    return run(PreparedPerLaneLobe<Arch, Variant::fast, Power::in_float, kInN>(kernel, normalized));
   if (kernel.power == Power::in_float)
     return run(
-        PreparedPerLaneLobe<Arch, Power::in_float, kPreciseDegree, kInN>(kernel, normalized));
+        PreparedPerLaneLobe<Arch, Variant::precise, Power::in_float, kInN>(kernel, normalized));
   if constexpr (simd::has_fused_fma<Arch>)
     if (kernel.power == Power::compensated)
-      return run(PreparedPerLaneLobe<Arch, Power::compensated, kPreciseDegree, kInN>(
+      return run(PreparedPerLaneLobe<Arch, Variant::precise, Power::compensated, kInN>(
           kernel, normalized));
-  run(PreparedPerLaneLobe<Arch, Power::in_double, kPreciseDegree, kInN>(kernel, normalized));
+  run(PreparedPerLaneLobe<Arch, Variant::precise, Power::in_double, kInN>(kernel, normalized));
 }
 template <class Arch>
 void per_lane_array(const PerLaneKernel& kernel, bool normalized, const float* t, const float* n,

@@ -131,15 +131,17 @@ class PreparedLobe {
 };
 
 // A PerLaneKernel with its constants broadcast once: F(t; n) per lane (kutlog/lobe.hpp).
-// kPower must be the kernel's power or in_double (slower, within the precise bound);
-// compensated needs a fused multiply-add. kBaseDegree must be the kernel's r_degree;
-// kInN, the kernel's in_n, needs one too (a compile-time choice: as a branch the line of c^2
-// cost AVX2 a tenth of its rate).
-template <class Arch, PerLaneKernel::Power kPower = PerLaneKernel::Power::in_double,
-          int kBaseDegree = PerLaneKernel::kPreciseBaseDegree, bool kInN = false>
+// kVariant must be the kernel's (its R's degree, and fast's c^2 one multiply-add). kPower must
+// be the kernel's power or in_double (slower, within the precise bound); compensated needs a
+// fused multiply-add. kInN, the kernel's in_n, needs one too (a compile-time choice: as a
+// branch the line of c^2 cost AVX2 a tenth of its rate).
+template <class Arch, Variant kVariant = Variant::precise,
+          PerLaneKernel::Power kPower = PerLaneKernel::Power::in_double, bool kInN = false>
 class PreparedPerLaneLobe {
  public:
   using F = floats<Arch>;
+  static constexpr int kBaseDegree = kVariant == Variant::fast ? PerLaneKernel::kFastBaseDegree
+                                                               : PerLaneKernel::kPreciseBaseDegree;
 
   PreparedPerLaneLobe(const PerLaneKernel& kernel, bool normalized)
       : kernel_(kernel), normalized_(normalized), k_(float(kernel.k)),
@@ -156,8 +158,12 @@ class PreparedPerLaneLobe {
     F c_squared, y_offset;
     if constexpr (kInN) {
       static_assert(has_fused_fma<Arch>, "the line is bounded for one rounding");
-      const F low = mul_add(c_squared_slope_lo_, n_clamped, h_[1]);
-      c_squared = mul_add(c_squared_slope_, n_clamped, low);
+      if constexpr (kVariant == Variant::fast) {  // its slope is one float
+        c_squared = mul_add(c_squared_slope_, n_clamped, h_[1]);
+      } else {
+        const F low = mul_add(c_squared_slope_lo_, n_clamped, h_[1]);
+        c_squared = mul_add(c_squared_slope_, n_clamped, low);
+      }
     } else {
       F y = xsimd::reciprocal(n_clamped);  // 12 or 14 bits, refined by one Newton step
       y = mul_add(y, neg_mul_add(n_clamped, y, F(1.0f)), y);
@@ -216,11 +222,12 @@ class PreparedPerLaneLobe {
   }
 
   using Batches = std::array<F, PerLaneKernel::kMaxDegree + 1>;
-  // Horner's rule from c[degree] down. Degrees 1 to 3, the setup's usual, by branches the
+  // Horner's rule from c[degree] down. Degrees 0 to 3, the setup's usual, by branches the
   // predictor learns (a jump table's indirect jump cost 12% of the kernel at n = 1000); the
   // others enter the chain at the degree's step, where a loop measured 6% slower.
   [[gnu::always_inline]] static F horner(F x, const Batches& c, int degree) {
     static_assert(PerLaneKernel::kMaxDegree == 20, "one step per degree below");
+    if (degree == 0) return c[0];
     if (degree == 1) return mul_add(c[1], x, c[0]);
     if (degree == 2) return mul_add(mul_add(c[2], x, c[1]), x, c[0]);
     if (degree == 3) return mul_add(mul_add(mul_add(c[3], x, c[2]), x, c[1]), x, c[0]);
