@@ -103,7 +103,6 @@ std::optional<ScalarPiecesFitter::Fitted<Pieces>> ScalarPiecesFitter::certify(
   };
   Fitted<Pieces> fitted;
   Pieces& pieces = fitted.pieces;
-  pieces.t_cut = t_cut_;
   // Every t <= t_cut in the zero piece: x(t_cut) at least count, computed.
   pieces.pieces_per_w = Type(cut.pieces_per_w);
   while (x_of(t_cut_, pieces.pieces_per_w) < Type(count))

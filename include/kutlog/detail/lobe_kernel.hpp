@@ -131,8 +131,9 @@ struct LobeKernel {
 
 // The scalar path where its setup certifies it (src/scalar_pieces.hpp): the support
 // w = 1 - t in [0, 1 - t_cut] cut into equal pieces, scale F a polynomial on each. No branch
-// on t and no clamp: the setup proves every polynomial, its roundings counted, within
-// [0, scale_f]. From t_cut down, x falls in the last piece, whose polynomial is 0.
+// on t in the lobe and no clamp of the output: the setup proves every polynomial, its
+// roundings counted, within [0, scale_f]. From t_cut down, x is at least the last piece's
+// index (the setup's), and that piece's polynomial is 0 for every finite u.
 template <class Real, std::size_t kDegree>
 struct PiecewisePolynomial {
   static constexpr std::size_t degree = kDegree;
@@ -143,15 +144,16 @@ struct PiecewisePolynomial {
     std::array<Real, kDegree + 1> polynomial;
     Real center;
   };
-  float t_cut = 0;
   Real pieces_per_w = 0;     // x = w pieces_per_w, in the piece floor(x)
   std::vector<Piece> table;  // empty where the setup could not certify it
 
   [[gnu::always_inline]] float evaluate(float t) const noexcept {
-    if (t != t) return t;  // NaN, whose x has no piece
-    const Real x = (Real(1) - Real(std::min(std::max(t, t_cut), 1.0f))) * pieces_per_w;
-    // At most the zero piece: the setup puts x(t_cut) below its index + 1.
-    const Piece& piece = table[std::size_t(std::int64_t(x))];
+    // NaN kept; below -1, past every cut-off, 0: x stays below 2 pieces_per_w, finite.
+    if (!(t >= -1.0f)) [[unlikely]] return t != t ? t : 0.0f;
+    const Real x = (Real(1) - Real(std::min(t, 1.0f))) * pieces_per_w;
+    // Past the zero piece, clamped to it in integers: a clamp of t to t_cut would take a turn
+    // of the floating-point adders, the units this path waits on.
+    const Piece& piece = table[std::min(std::size_t(std::int64_t(x)), table.size() - 1)];
     return float(horner(piece.polynomial, x - piece.center));
   }
 
