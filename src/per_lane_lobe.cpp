@@ -240,6 +240,8 @@ PerLaneKernel fit_kernel(double n_min, double n_max, int k, double Q, Variant va
       0, w_max, 0, target));
   kernel.g_degree = g.degree;
   kernel.g = g.coefficients;
+  kernel.w_clamped = !std::all_of(g.coefficients.begin(), g.coefficients.begin() + g.degree + 1,
+                                  [](float coefficient) { return coefficient > 0; });
   kernel.r_degree = base_fit(variant).degree;
   kernel.r = base_fit(variant).coefficients;
   // At k = 1 there is no power: the base in float, one fused multiply-add, is rounded once

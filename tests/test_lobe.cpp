@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -283,6 +284,48 @@ TEST_P(LobePerArch, PerLaneWithOneExponent) {
                   kLobeBounds[variant == Variant::fast ? 3 : 2].max_abs_error())
             << "t = " << t[i];
     }
+}
+
+// PerLaneLobe past each lane's cut-off, down to t = -infinity: 0, on materials whose G has
+// positive coefficients (w left unclamped: the gloss map's) and not (a G of degree 5 with
+// negative ones; planted: the setup's test of the signs inverted).
+TEST_P(LobePerArch, PerLaneZeroFarPastTheCut) {
+  const PerLaneCase increasing{3, 0.5, 500, 2000}, turning{30, 0.958376, 31.5718, 76.8568};
+  for (Variant variant : {Variant::precise, Variant::fast}) {
+    EXPECT_FALSE(PerLaneLobe(increasing.n_min, increasing.n_max, increasing.k, increasing.Q)
+                     .kernel(variant)
+                     .w_clamped);
+  }
+  EXPECT_TRUE(PerLaneLobe(turning.n_min, turning.n_max, turning.k, turning.Q)
+                  .kernel(Variant::fast)
+                  .w_clamped);
+  for (const PerLaneCase& c : {increasing, turning, PerLaneCase{1, 0.5, 1, 1e6}}) {
+    const PerLaneLobe lobe(c.n_min, c.n_max, c.k, c.Q);
+    std::vector<float> t, n;
+    for (int j = 0; j <= 16; ++j) {
+      const float lane_n = std::clamp(float(c.n_min * std::pow(c.n_max / c.n_min, j / 16.0)),
+                                      float(c.n_min), float(c.n_max));
+      const double cutoff = ref::KutlogLobe(lane_n, c.k, c.Q).cutoff_angle() * (1 + 0x1p-10);
+      for (int i = 0; i <= 256; ++i) {  // rounded down: past the cut-off as a float too
+        const double cosine = std::cos(std::min(ref::pi, cutoff + (ref::pi - cutoff) * i / 256));
+        const float below = float(cosine);
+        t.push_back(double(below) > cosine ? std::nextafter(below, -1.0f) : below);
+        n.push_back(lane_n);
+      }
+      for (float far : {-1.0000001f, -2.0f, -1e30f, -FLT_MAX, -INFINITY}) {
+        t.push_back(far);
+        n.push_back(lane_n);
+      }
+    }
+    std::vector<float> out(t.size());
+    for (Variant variant : {Variant::precise, Variant::fast})
+      for (Normalization normalization : {Normalization::none, Normalization::exact_coef}) {
+        lobe.eval(t.data(), n.data(), out.data(), t.size(), variant, normalization);
+        for (std::size_t i = 0; i < t.size(); ++i)
+          ASSERT_EQ(out[i], 0.0f) << "k = " << c.k << ", n = " << n[i] << ", t = " << t[i] << ", "
+                                  << variant_name(variant);
+      }
+  }
 }
 
 // Exponents whose support holds no float below 1, or almost (tests/fuzz found the peak zeroed

@@ -18,31 +18,38 @@
 namespace kutlog::detail {
 
 // PerLaneLobe's array loop, on the instance of PreparedPerLaneLobe that matches the kernel.
-template <class Arch, bool kInN>
+template <class Arch, bool kInN, bool kWClamped>
 void per_lane_instance(const PerLaneKernel& kernel, bool normalized, const float* t,
                        const float* n, float* out, std::size_t count) {
   const auto run = [&](const auto& lobe) { map_arrays<Arch, 2>(lobe, {t, n}, out, count, 1.0f); };
   using simd::PreparedPerLaneLobe;
   using Power = PerLaneKernel::Power;
+  constexpr Variant kFast = Variant::fast, kPrecise = Variant::precise;
   if (kernel.r_degree == PerLaneKernel::kFastBaseDegree)
-    return run(PreparedPerLaneLobe<Arch, Variant::fast, Power::in_float, kInN>(kernel, normalized));
+    return run(PreparedPerLaneLobe<Arch, kFast, Power::in_float, kInN, kWClamped>(kernel,
+                                                                                  normalized));
   if (kernel.power == Power::in_float)
-    return run(
-        PreparedPerLaneLobe<Arch, Variant::precise, Power::in_float, kInN>(kernel, normalized));
+    return run(PreparedPerLaneLobe<Arch, kPrecise, Power::in_float, kInN, kWClamped>(kernel,
+                                                                                     normalized));
   if constexpr (simd::has_fused_fma<Arch>)
     if (kernel.power == Power::compensated)
-      return run(PreparedPerLaneLobe<Arch, Variant::precise, Power::compensated, kInN>(
+      return run(PreparedPerLaneLobe<Arch, kPrecise, Power::compensated, kInN, kWClamped>(
           kernel, normalized));
-  run(PreparedPerLaneLobe<Arch, Variant::precise, Power::in_double, kInN>(kernel, normalized));
+  run(PreparedPerLaneLobe<Arch, kPrecise, Power::in_double, kInN, kWClamped>(kernel, normalized));
 }
 template <class Arch>
 void per_lane_array(const PerLaneKernel& kernel, bool normalized, const float* t, const float* n,
                     float* out, std::size_t count) {
+  const auto instance = [&]<bool kInN, bool kWClamped>() {
+    per_lane_instance<Arch, kInN, kWClamped>(kernel, normalized, t, n, out, count);
+  };
   // The forms in n are bounded for a fused multiply-add only (src/per_lane_lobe.cpp).
   if constexpr (simd::has_fused_fma<Arch>)
     if (kernel.in_n)
-      return per_lane_instance<Arch, true>(kernel, normalized, t, n, out, count);
-  per_lane_instance<Arch, false>(kernel, normalized, t, n, out, count);
+      return kernel.w_clamped ? instance.template operator()<true, true>()
+                              : instance.template operator()<true, false>();
+  kernel.w_clamped ? instance.template operator()<false, true>()
+                   : instance.template operator()<false, false>();
 }
 
 template <class Arch>

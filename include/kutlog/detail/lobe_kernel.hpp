@@ -181,6 +181,9 @@ struct PerLaneKernel {
   float n_min = 1, n_max = 1, y_center = 0, v_cut = 0, w_limit = 0;
   int k = 1, h_degree = 0, k_degree = 0, g_degree = 0, r_degree = 0;
   bool in_n = false;
+  // False where G's coefficients are all positive: w G(w) then grows past w_limit by itself,
+  // up to infinity at t = -infinity, and the SIMD kernel leaves w unclamped.
+  bool w_clamped = true;
   float c_squared_slope = 0, c_squared_slope_lo = 0, coef_n_slope = 0;
   int coef_n_degree = 0;
   // Where the SIMD kernel takes the power: in float lanes (fast, and precise at k = 1: the

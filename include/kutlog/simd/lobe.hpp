@@ -134,9 +134,11 @@ class PreparedLobe {
 // kVariant must be the kernel's (its R's degree, and fast's c^2 one multiply-add). kPower must
 // be the kernel's power or in_double (slower, within the precise bound); compensated needs a
 // fused multiply-add. kInN, the kernel's in_n, needs one too (a compile-time choice: as a
-// branch the line of c^2 cost AVX2 a tenth of its rate).
+// branch the line of c^2 cost AVX2 a tenth of its rate); kWClamped must be the kernel's
+// w_clamped or true.
 template <class Arch, Variant kVariant = Variant::precise,
-          PerLaneKernel::Power kPower = PerLaneKernel::Power::in_double, bool kInN = false>
+          PerLaneKernel::Power kPower = PerLaneKernel::Power::in_double, bool kInN = false,
+          bool kWClamped = true>
 class PreparedPerLaneLobe {
  public:
   using F = floats<Arch>;
@@ -170,8 +172,10 @@ class PreparedPerLaneLobe {
       y_offset = y - F(kernel_.y_center);
       c_squared = n_clamped * horner(y_offset, h_, kernel_.h_degree);
     }
-    // min(w_limit, .) keeps NaN; past w_limit every lane's v >= v_cut.
-    const F w = xsimd::min(F(kernel_.w_limit), F(1.0f) - xsimd::min(F(1.0f), t));
+    // min(w_limit, .) keeps NaN; past w_limit every lane's v >= v_cut, with G increasing
+    // without it.
+    F w = F(1.0f) - xsimd::min(F(1.0f), t);
+    if constexpr (kWClamped) w = xsimd::min(F(kernel_.w_limit), w);
     const F v = c_squared * (w * horner(w, g_, kernel_.g_degree));
     F r = r_[kBaseDegree];
     for (int i = kBaseDegree; i-- > 0;) r = mul_add(r, v, r_[std::size_t(i)]);
