@@ -52,7 +52,12 @@ std::string_view explanation(RatioKind kind) {
              "`kutlog::PowerPoly` of the same accuracy: 2^(n log2 t) with short polynomials\n"
              "fitted for that n over the only t that matter, the fast pow a speed-minded renderer\n"
              "writes for one material and the strongest pow-based peer (its error: `kutlog-ulp\n"
-             "--function pow_poly`); above 1x, kutlog is faster than it.\n";
+             "--function pow_poly`); above 1x, kutlog is faster than it.\n"
+             "`perlane / pow_poly_perlane` and `perlane_fast / pow_poly_perlane_fast` set the\n"
+             "per-lane lobe against `kutlog::PerLanePowerPoly` on the same gloss map:\n"
+             "2^(n log2 t) per lane, its log fitted over the range's t, at `PerLaneLobe`'s\n"
+             "accuracies (2^-20, 2^-16), the Blinn-Phong coef per lane; n >= 100 (its domain:\n"
+             "n/2 >= 44).\n";
     case RatioKind::fragment:
       return "## One fragment per call\n\n"
              "The scalar `lobe.eval(t)` called once per fragment in a loop, against `powf(t, n)`\n"

@@ -1,6 +1,7 @@
 // Benchmarks of the shading lobes, named with the tokens the ratio report reads:
 // lobe/<kernel>/n:<n>/k:<k>/arch:<arch>, kernel in kutlog_precise, kutlog_fast,
-// kutlog_perlane, kutlog_perlane_fast, pow_xsimd, pow_poly_precise, pow_poly_fast, pow_precise, schlick, copy; and
+// kutlog_perlane, kutlog_perlane_fast, pow_xsimd, pow_poly_precise, pow_poly_fast,
+// pow_poly_perlane_precise, pow_poly_perlane_fast, pow_precise, schlick, copy; and
 // the spans of a renderer,
 // span/<kernel>/n:1000/k:<k>/count:<count>/arch:<arch> (kernel in kutlog_precise, kutlog_fast
 // and shade_cosines, the stream API's), and the stream API on 16x16 tiles,
@@ -114,6 +115,21 @@ inline void register_lobe_benchmarks(Arch arch) {
         blinn_phong_xsimd(x, out, N, exponent);
       });
     });
+    // Its per-lane form (kutlog::PerLanePowerPoly) on the same gloss map as kutlog_perlane, at
+    // PerLaneLobe's accuracies, normalized per lane; its domain, n_min >= 44, skips n = 10.
+    for (Variant variant : {Variant::precise, Variant::fast})
+      if (n >= 100)
+        add(variant == Variant::precise ? "pow_poly_perlane_precise" : "pow_poly_perlane_fast", "",
+            [=](benchmark::State& state) {
+              const PerLanePowerPoly power(n / 2.0, 2.0 * n, variant, Normalization::exact_coef);
+              std::vector<float> exponents =
+                  uniform_inputs(std::log(n / 2.0f), std::log(2.0f * n), 2);
+              for (float& e : exponents) e = std::exp(e);
+              run_array(state, arch, t, exponents,
+                        [&](const float* x, const float* y, float* out) {
+                          power.eval(x, y, out, N);
+                        });
+            });
     // The fast pow a speed-minded user writes for one material (kutlog::PowerPoly), at each
     // lobe variant's accuracy, the normalization folded in as kutlog's.
     for (Variant variant : {Variant::precise, Variant::fast})

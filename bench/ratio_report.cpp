@@ -101,7 +101,8 @@ std::optional<tools::Table> RatioCollector::lobe_ratios() const {
   // variant over the polynomial pow of the same accuracy (kutlog::PowerPoly), the strongest peer.
   tools::Table table({"arch", "n", "k", "pow_xsimd (M/s)", "precise / pow_poly_precise",
                       "fast / pow_poly_fast", "kutlog_precise", "kutlog_fast", "kutlog_perlane",
-                      "kutlog_perlane_fast", "pow_precise", "schlick"});
+                      "kutlog_perlane_fast", "perlane / pow_poly_perlane",
+                      "perlane_fast / pow_poly_perlane_fast", "pow_precise", "schlick"});
   bool any = false;
   for (const std::string& arch : compiled_arch_names())
     for (int n : {10, 100, 1000}) {
@@ -111,18 +112,24 @@ std::optional<tools::Table> RatioCollector::lobe_ratios() const {
       if (pow_xsimd == 0) continue;
       any = true;
       const double poly_precise = rate("lobe/pow_poly_precise" + at_n + tail),
-                   poly_fast = rate("lobe/pow_poly_fast" + at_n + tail);
+                   poly_fast = rate("lobe/pow_poly_fast" + at_n + tail),
+                   poly_per_lane = rate("lobe/pow_poly_perlane_precise" + at_n + tail),
+                   poly_per_lane_fast = rate("lobe/pow_poly_perlane_fast" + at_n + tail);
       for (int k : {1, 3, 5}) {
         const std::string at_k = at_n + "/k:" + std::to_string(k);
         const double precise = rate("lobe/kutlog_precise" + at_k + tail),
                      fast = rate("lobe/kutlog_fast" + at_k + tail),
+                     per_lane = rate("lobe/kutlog_perlane" + at_k + tail),
                      per_lane_fast = rate("lobe/kutlog_perlane_fast" + at_k + tail);
         table.add_row({arch, std::to_string(n), std::to_string(k), millions(pow_xsimd),
                        poly_precise ? times(precise / poly_precise) : "",
                        poly_fast ? times(fast / poly_fast) : "", times(precise / pow_xsimd),
-                       times(fast / pow_xsimd),
-                       times(rate("lobe/kutlog_perlane" + at_k + tail) / pow_xsimd),
+                       times(fast / pow_xsimd), times(per_lane / pow_xsimd),
                        per_lane_fast ? times(per_lane_fast / pow_xsimd) : "",
+                       poly_per_lane ? times(per_lane / poly_per_lane) : "",
+                       poly_per_lane_fast && per_lane_fast
+                           ? times(per_lane_fast / poly_per_lane_fast)
+                           : "",
                        times(rate("lobe/pow_precise" + at_n + tail) / pow_xsimd),
                        times(rate("lobe/schlick" + at_n + tail) / pow_xsimd)});
       }

@@ -47,6 +47,10 @@ void PerLaneLobe::eval(const float* t, const float* n, float* out, std::size_t c
 void PowerPoly::eval(const float* t, float* out, std::size_t count) const noexcept {
   active_table().power_poly(kernel_, t, out, count);
 }
+void PerLanePowerPoly::eval(const float* t, const float* n, float* out,
+                            std::size_t count) const noexcept {
+  active_table().per_lane_power_poly(kernel_, t, n, out, count);
+}
 void blinn_phong_xsimd(const float* t, float* out, std::size_t count, float n, float scale) {
   ref::validate_exponent(n);
   active_table().blinn_phong_xsimd(t, n, scale, out, count);

@@ -17,91 +17,10 @@
 namespace kutlog {
 namespace {
 
+using detail::FloatFit;
 using detail::Real;
-
-// slope x + P(x - center), P's coefficients `coefficients` (slope 0 but for coef in n).
-struct FloatFit {
-  int degree = 0;
-  PerLaneKernel::Coefficients coefficients{};
-  float slope = 0;
-};
-
-// Whether the fit, evaluated in float by Horner's rule in x - center as every arch runs it
-// (each step one fused multiply-add, or a product and a sum: SSE4.1; this file is compiled
-// with -ffp-contract=off), is within `allowed` of `exact` (relative) at every grid point;
-// NaN (a fit that overflows float) is not. A slope's term is added last by a fused
-// multiply-add: only FMA archs take that form.
-bool meets(const FloatFit& fit, const std::vector<double>& grid, const std::vector<double>& exact,
-           double center, double allowed) {
-  for (std::size_t j = 0; j < grid.size(); ++j) {
-    const float x = float(grid[j]), s = x - float(center);
-    float fused = fit.coefficients[fit.degree], unfused = fused;
-    for (int i = fit.degree; i-- > 0;) {
-      fused = std::fma(fused, s, fit.coefficients[i]);
-      const float product = unfused * s;
-      unfused = product + fit.coefficients[i];
-    }
-    if (fit.slope != 0) unfused = fused = std::fma(fit.slope, x, fused);
-    for (float value : {fused, unfused})
-      if (!(std::fabs(value - exact[j]) <= allowed * std::fabs(exact[j]))) return false;
-  }
-  return true;
-}
-
-// The lowest degree at which a truncation of g's Chebyshev series on [lo, hi], as slope x
-// plus a polynomial in x - center evaluated in float by Horner's rule, has relative error at
-// most `target` on a grid of 1025 points; none if no degree has, or if no series of degree
-// 256 stands in for g. Where g is nearly slope x, the polynomial (and its rounding) is a
-// small part of g: a line alone could not meet the target, and a polynomial alone would have
-// its constant's rounding cancel against its slope's term.
-std::optional<FloatFit> fit_float(const std::function<Real(Real)>& g, double lo, double hi,
-                                  double center, double target, float slope = 0) {
-  FloatFit fit;
-  // A single point (n_min = n_max): its value. Interpolation nodes there would coincide.
-  if (!(hi > lo)) {
-    fit.coefficients[0] = float(g(lo));
-    return fit;
-  }
-  fit.slope = slope;
-  // The fits are checked against the series, not g: it costs 2 N + 1 calls of g (N = 8 or 16
-  // mostly) where g on the grid costs 1025 (ref::coef_exact sums k + 1 terms). The
-  // series' error e is allowed for twice over (it is measured where it peaks, and the sum in
-  // double on the grid adds its own rounding): a fit within `allowed` of the series is within
-  // allowed (1 + 2 e) + 2 e = target of g.
-  constexpr double kSeriesTolerance = 0x1p-32;
-  const detail::ChebyshevSeries series =
-      detail::chebyshev_series(g, lo, hi, kSeriesTolerance, 256);
-  if (!(series.measured_error <= kSeriesTolerance)) return std::nullopt;
-  constexpr double kSeriesError = 2 * kSeriesTolerance;
-  const double allowed = (target - kSeriesError) / (1 + kSeriesError);
-  constexpr int kGridIntervals = 1024;
-  std::vector<double> grid(kGridIntervals + 1);
-  // Floats: the kernels take x in float (an n, a w), and a fit's error in n is about its
-  // argument's rounding.
-  for (int j = 0; j <= kGridIntervals; ++j)
-    grid[j] = double(float(lo + (hi - lo) * j / kGridIntervals));
-  const std::vector<double> exact = series.values_at(grid);
-  const int max_degree = std::min(PerLaneKernel::kMaxDegree, int(series.coefficients.size()) - 1);
-  // With a slope, degree 0 first: the series' own line, its slope in place of the one given
-  // (the secant's would leave their difference's term out), its rounding moved into the
-  // constant at the middle of [lo, hi].
-  if (slope != 0) {
-    const std::vector<Real> line = series.monomials(1, center);
-    fit.slope = float(line[1]);
-    fit.coefficients[0] = float(line[0] - line[1] * Real(center) +
-                                (line[1] - Real(fit.slope)) * Real(0.5 * (lo + hi)));
-    if (meets(fit, grid, exact, center, allowed)) return fit;
-    fit.slope = slope;
-  }
-  for (fit.degree = 1; fit.degree <= max_degree; ++fit.degree) {
-    std::vector<Real> q = series.monomials(fit.degree, center);
-    q[0] -= Real(slope) * Real(center);
-    q[1] -= Real(slope);
-    for (int i = 0; i <= fit.degree; ++i) fit.coefficients[i] = float(q[i]);
-    if (meets(fit, grid, exact, center, allowed)) return fit;
-  }
-  return std::nullopt;
-}
+using detail::fit_float;
+static_assert(FloatFit::kMaxDegree == PerLaneKernel::kMaxDegree);
 
 // Each polynomial's relative error, by variant: a quarter or less of the bound (2^-20, 2^-16)
 // each, leaving the fast variant's power in float its k roundings (k <= 64: 2^-18 at most).

@@ -1,8 +1,10 @@
-// Polynomial fits for the kernels' setup (src/lobe.cpp, src/per_lane_lobe.cpp).
+// Polynomial fits for the kernels' setups (src/lobe.cpp, per_lane_lobe.cpp, power_poly.cpp).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace kutlog::detail {
@@ -46,5 +48,23 @@ struct ChebyshevSeries {
 // 2 N + 1 times.
 ChebyshevSeries chebyshev_series(const std::function<Real(Real)>& g, Real lo, Real hi,
                                  double tolerance, int max_degree);
+
+// slope x + P(x - center), P's coefficients `coefficients` (slope 0 but where fitted with
+// one): the per-lane kernels' polynomials (src/per_lane_lobe.cpp, src/power_poly.cpp).
+struct FloatFit {
+  static constexpr int kMaxDegree = 20;
+  int degree = 0;
+  std::array<float, kMaxDegree + 1> coefficients{};
+  float slope = 0;
+};
+
+// The lowest degree at which a truncation of g's Chebyshev series on [lo, hi], as slope x
+// plus a polynomial in x - center evaluated in float by Horner's rule, has relative error at
+// most `target` on a grid of 1025 points; none if no degree has, or if no series of degree
+// 256 stands in for g. Where g is nearly slope x, the polynomial (and its rounding) is a
+// small part of g: a line alone could not meet the target, and a polynomial alone would have
+// its constant's rounding cancel against its slope's term.
+std::optional<FloatFit> fit_float(const std::function<Real(Real)>& g, double lo, double hi,
+                                  double center, double target, float slope = 0);
 
 }  // namespace kutlog::detail

@@ -147,6 +147,68 @@ TEST(PowerPoly, InvalidParametersAreRefused) {
 }
 static_assert(!std::is_constructible_v<PowerPoly, double, double>);  // a variant, not a scale
 
+// PerLanePowerPoly, the per-lane peer: random lanes (n log-uniform over the range and a little
+// past it, t over the decades of t^n that matter and around its cut) and special values, within
+// PerLaneLobe's bounds of scale(n) t^n in double (scale the Blinn-Phong coef or 1), 0 <= out
+// <= the lane's output at t = 1, the data rule (planted: the log fitted to four times the
+// bound fails it).
+TEST_P(LobePerArch, PerLanePowerPolyWithinItsBoundWithTheDataRule) {
+  for (Variant variant : tools::kLobeVariants) {
+    const double bound = kLobeBounds[variant == Variant::precise ? 2 : 3].promised_abs_error;
+    double largest = 0;
+    for (auto [n_min, n_max] : {std::pair{500.0, 2000.0}, std::pair{46.0, 1e5},
+                                std::pair{44.0, 44.0}, std::pair{1e4, 1e8}})
+      for (Normalization normalization : tools::kLobeNormalizations) {
+        const PerLanePowerPoly power(n_min, n_max, variant, normalization);
+        std::mt19937 engine(7);
+        std::uniform_real_distribution<double> unit(0, 1);
+        std::vector<float> t = {1.0f, 1.5f, INFINITY, 0.0f, -0.0f, -1.0f, -INFINITY, kNaN, 0.5f};
+        std::vector<float> n(t.size(), float(n_min));
+        for (int i = 0; i < 1 << 14; ++i) {
+          const double lane_n = n_min * std::pow(n_max / n_min, 1.2 * unit(engine) - 0.1);
+          n.push_back(float(lane_n));
+          // t^n from 1 down to 2^-30 (past the cut, bound / 2), log-uniform in t^n.
+          t.push_back(float(std::exp2(-30 * unit(engine) / std::clamp(lane_n, n_min, n_max))));
+        }
+        t.push_back(0.5f), n.push_back(kNaN);
+        std::vector<float> out(t.size()), peak(t.size()), ones(t.size(), 1.0f);
+        power.eval(t.data(), n.data(), out.data(), t.size());
+        power.eval(ones.data(), n.data(), peak.data(), t.size());
+        for (std::size_t i = 0; i < t.size(); ++i) {
+          const auto where = [&] {  // on a failure only
+            return "n in [" + std::to_string(n_min) + ", " + std::to_string(n_max) +
+                   "], lane n " + std::to_string(n[i]) + ", t " + std::to_string(t[i]);
+          };
+          if (std::isnan(t[i]) || std::isnan(n[i])) {
+            ASSERT_TRUE(std::isnan(out[i])) << where();
+            continue;
+          }
+          const double lane_n = std::clamp(double(n[i]), n_min, n_max);
+          const double scale = normalization == Normalization::exact_coef
+                                   ? ref::blinn_phong_exact_coef(lane_n)
+                                   : 1.0;
+          if (t[i] <= 0) ASSERT_EQ(out[i], 0.0f) << where();
+          if (t[i] >= 1) ASSERT_EQ(out[i], peak[i]) << where();
+          ASSERT_TRUE(out[i] >= 0 && out[i] <= peak[i]) << where() << ": " << out[i];
+          const double exact = t[i] <= 0 ? 0.0 : scale * std::pow(std::min(1.0, double(t[i])), lane_n);
+          const double error = std::fabs(out[i] - exact) / scale;
+          ASSERT_LE(error, bound) << where() << ": " << out[i] << " against " << exact;
+          largest = std::max(largest, error);
+        }
+      }
+    EXPECT_GE(largest, bound / 4) << "a loose bound";
+    record_max("power_poly_perlane_" + std::string(variant_name(variant)), largest);
+  }
+}
+
+TEST(PerLanePowerPoly, InvalidParametersAreRefused) {
+  expect_invalid([] { PerLanePowerPoly(43, 100, Variant::precise); }, "n_min", ">= 44");
+  expect_invalid([] { PerLanePowerPoly(35, 100, Variant::fast); }, "n_min", ">= 36");
+  expect_invalid([] { PerLanePowerPoly(NAN, 100); }, "n_min", "finite and > 0");
+  expect_invalid([] { PerLanePowerPoly(100, 50); }, "n_max", "[n_min, FLT_MAX]");
+  expect_invalid([] { PerLanePowerPoly(100, 1e39); }, "n_max", "[n_min, FLT_MAX]");
+}
+
 TEST_P(LobePerArch, AnyCountAndOffsetWritesOnlyTheOutput) {
   const Lobe lobe(100, 3, 0.5);
   // Each t's output from whole batches only (64 is a multiple of every arch's lane count), to

@@ -175,6 +175,24 @@ class PowerPoly {
   PowerPolyKernel kernel_;
 };
 
+// The per-lane peer of PowerPoly, for a glossiness map: scale(n) t^n with n per lane in
+// [n_min, n_max] (clamped to it), by 2^(n log2 t) with polynomials fitted for that range, and
+// scale(n) the Blinn-Phong coef (ref::blinn_phong_exact_coef) with Normalization::exact_coef,
+// else 1. Within PerLaneLobe's bounds of scale(n), 2^-20 (precise) and 2^-16 (fast); 0 where
+// scale t^n < half of that. std::invalid_argument unless n_min >= 44 (precise) or 36 (fast),
+// where t^n at t = 1/sqrt(2) is below a quarter of that (the log's domain), and n_min <= n_max
+// <= FLT_MAX.
+class PerLanePowerPoly {
+ public:
+  PerLanePowerPoly(double n_min, double n_max, Variant variant = Variant::precise,
+                   Normalization normalization = Normalization::none);
+  void eval(const float* t, const float* n, float* out, std::size_t count) const noexcept;
+  const PerLanePowerPolyKernel& kernel() const { return kernel_; }
+
+ private:
+  PerLanePowerPolyKernel kernel_;
+};
+
 // Baselines: scale t^n by xsimd::pow or pow_u10, and Schlick's t / (n - n t + t); n is
 // checked per call (std::invalid_argument before anything is written).
 void blinn_phong_xsimd(const float* t, float* out, std::size_t count, float n, float scale = 1);

@@ -85,6 +85,7 @@ KernelTable make_kernel_table() {
                         out, count);
   };
   table.power_poly = &power_poly_array<Arch>;
+  table.per_lane_power_poly = &per_lane_power_poly_array<Arch>;
   table.shade_vectors = &shade_vectors_array<Arch>;
   table.shade_directions = &shade_directions_array<Arch>;
   table.shade_cosines = &shade_cosines_array<Arch>;

@@ -25,6 +25,8 @@ using ShadeCosinesKernel = void (*)(const LobeKernel&, const ShadeOptions&, cons
                                     const float*, float*, std::size_t, const std::uint8_t*);
 
 using PowerPolyArrayKernel = void (*)(const PowerPolyKernel&, const float*, float*, std::size_t);
+using PerLanePowerPolyArrayKernel = void (*)(const PerLanePowerPolyKernel&, const float*,
+                                             const float*, float*, std::size_t);
 
 using PerLaneArrayKernel = void (*)(const PerLaneKernel&, bool normalized, const float*,
                                     const float*, float*, std::size_t);
@@ -57,6 +59,7 @@ struct KernelTable : LobeArrayKernels {
   PerLaneArrayKernel kutlog_per_lane;
   PowerLobeArrayKernel blinn_phong_xsimd, blinn_phong_u10;
   PowerPolyArrayKernel power_poly;
+  PerLanePowerPolyArrayKernel per_lane_power_poly;
   BinaryScalarArrayKernel schlick;
   ShadeVectorsKernel shade_vectors;
   ShadeDirectionsKernel shade_directions;

@@ -35,6 +35,27 @@ void power_poly_array(const PowerPolyKernel& kernel, const float* t, float* out,
   kLoops[std::size_t(form * kDegrees + kernel.log_degree - 1)](kernel, t, out, count);
 }
 
+// PerLanePowerPoly over arrays: one loop per variant (E's degree) and form of scale(n).
+template <class Arch>
+void per_lane_power_poly_array(const PerLanePowerPolyKernel& kernel, const float* t,
+                               const float* n, float* out, std::size_t count) {
+  using Scale = PerLanePowerPolyKernel::Scale;
+  const auto run = [&]<int kExpDegree>() {
+    const auto scaled = [&]<Scale kScale>() {
+      map_arrays<Arch, 2>(simd::PreparedPerLanePowerPoly<Arch, kExpDegree, kScale>(kernel),
+                          {t, n}, out, count, 1.0f);
+    };
+    switch (kernel.scale_form) {
+      case Scale::none: return scaled.template operator()<Scale::none>();
+      case Scale::fitted: return scaled.template operator()<Scale::fitted>();
+      case Scale::reciprocal: return scaled.template operator()<Scale::reciprocal>();
+    }
+  };
+  if (kernel.exp_degree == PerLanePowerPolyKernel::kPreciseExpDegree)
+    return run.template operator()<PerLanePowerPolyKernel::kPreciseExpDegree>();
+  run.template operator()<PerLanePowerPolyKernel::kFastExpDegree>();
+}
+
 // The lobe over an array: the polynomial form with its degree as a template argument (unrolled,
 // coefficients in registers) and its finish fixed, the base_power form generic. The table holds
 // one per degree and finish, so that a call picks its loop by the slot its Lobe computed at

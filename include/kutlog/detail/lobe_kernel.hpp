@@ -238,5 +238,26 @@ struct PowerPolyKernel {
   std::array<float, kPreciseExpDegree + 1> exp{};  // scale 2^f, exp[0] = the float scale
 };
 
+// PerLanePowerPoly's: per lane, n clamped to [n_min, n_max], x = max(t_floor, min(1, t)) - 1,
+// y = n x L(x), out = scale(n) 2^round(y) E(y - round(y)), 0 where y <= y_zero.
+struct PerLanePowerPolyKernel {
+  static constexpr int kMaxDegree = 20;
+  using Coefficients = std::array<float, kMaxDegree + 1>;
+  // scale(n): 1; scale_slope n + S(n); or the Blinn-Phong coef (n + 6) / (8 pi) + 1 / (pi n)
+  // with a reciprocal (its 2^(-n/2) term below the bound), where S would take more operations.
+  enum class Scale : std::uint8_t { none, fitted, reciprocal };
+  static constexpr int kPreciseExpDegree = 5, kFastExpDegree = 4;  // of E, by variant
+  float n_min = 1, n_max = 1;
+  float t_floor = 0;  // where t^n_min = bound / 4: below it every lane's t^n is too
+  float y_zero = 0;   // log2 of the bound / 2
+  int log_degree = 1, exp_degree = kPreciseExpDegree;
+  Scale scale_form = Scale::none;
+  float scale_slope = 0;
+  int scale_degree = 0;
+  Coefficients log{};                                           // log2(1 + x) / x
+  std::array<float, kPreciseExpDegree + 1> exp{};  // 2^f
+  Coefficients scale{};
+};
+
 }  // namespace kutlog
 KUTLOG_API_END

@@ -19,6 +19,29 @@ template <class Batch>
 inline Batch clamp_zero_to(Batch value, Batch upper) {
   return xsimd::min(upper, xsimd::max(Batch(0), value));
 }
+
+// Horner's rule from c[degree] down, the degree a setup's (the per-lane kernels'). Degrees 0
+// to 3, the setup's usual, by branches the predictor learns (a jump table's indirect jump cost
+// 12% of the per-lane lobe at n = 1000); the others enter the chain at the degree's step,
+// where a loop measured 6% slower.
+template <class Batch>
+[[gnu::always_inline]] inline Batch horner_to(Batch x, const std::array<Batch, 21>& c, int degree) {
+  if (degree == 0) return c[0];
+  if (degree == 1) return mul_add(c[1], x, c[0]);
+  if (degree == 2) return mul_add(mul_add(c[2], x, c[1]), x, c[0]);
+  if (degree == 3) return mul_add(mul_add(mul_add(c[3], x, c[2]), x, c[1]), x, c[0]);
+  Batch r = c[std::size_t(degree)];
+  switch (degree) {
+#define KUTLOG_STEP(d) case d: r = mul_add(r, x, c[d - 1]); [[fallthrough]];
+    KUTLOG_STEP(20) KUTLOG_STEP(19) KUTLOG_STEP(18) KUTLOG_STEP(17) KUTLOG_STEP(16)
+    KUTLOG_STEP(15) KUTLOG_STEP(14) KUTLOG_STEP(13) KUTLOG_STEP(12) KUTLOG_STEP(11)
+    KUTLOG_STEP(10) KUTLOG_STEP(9) KUTLOG_STEP(8) KUTLOG_STEP(7) KUTLOG_STEP(6)
+    KUTLOG_STEP(5) KUTLOG_STEP(4) KUTLOG_STEP(3) KUTLOG_STEP(2) KUTLOG_STEP(1)
+#undef KUTLOG_STEP
+    default: break;
+  }
+  return r;
+}
 }  // namespace detail
 
 // How a polynomial kernel ends: scale - w q (plain), scale_f + (scale_lo - w q) (split), or
@@ -170,13 +193,13 @@ class PreparedPerLaneLobe {
       F y = xsimd::reciprocal(n_clamped);  // 12 or 14 bits, refined by one Newton step
       y = mul_add(y, neg_mul_add(n_clamped, y, F(1.0f)), y);
       y_offset = y - F(kernel_.y_center);
-      c_squared = n_clamped * horner(y_offset, h_, kernel_.h_degree);
+      c_squared = n_clamped * detail::horner_to(y_offset, h_, kernel_.h_degree);
     }
     // min(w_limit, .) keeps NaN; past w_limit every lane's v >= v_cut, with G increasing
     // without it.
     F w = F(1.0f) - xsimd::min(F(1.0f), t);
     if constexpr (kWClamped) w = xsimd::min(F(kernel_.w_limit), w);
-    const F v = c_squared * (w * horner(w, g_, kernel_.g_degree));
+    const F v = c_squared * (w * detail::horner_to(w, g_, kernel_.g_degree));
     F r = r_[kBaseDegree];
     for (int i = kBaseDegree; i-- > 0;) r = mul_add(r, v, r_[std::size_t(i)]);
     // The base is in [0, 1] where v < v_cut: v r >= 0, and the cut's margin exceeds R's error
@@ -193,9 +216,10 @@ class PreparedPerLaneLobe {
     if (!normalized_) return zero_where(v >= F(kernel_.v_cut), value);
     F coef;
     if constexpr (kInN)
-      coef = mul_add(coef_n_slope_, n_clamped, horner(n_clamped, coef_n_, kernel_.coef_n_degree));
+      coef = mul_add(coef_n_slope_, n_clamped,
+                     detail::horner_to(n_clamped, coef_n_, kernel_.coef_n_degree));
     else
-      coef = n_clamped * horner(y_offset, coef_k_, kernel_.k_degree);
+      coef = n_clamped * detail::horner_to(y_offset, coef_k_, kernel_.k_degree);
 #if XSIMD_WITH_AVX512F
     if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>)
       return _mm512_maskz_mul_ps(_mm512_cmp_ps_mask(v, F(kernel_.v_cut), _CMP_NGE_UQ), value,
@@ -226,27 +250,6 @@ class PreparedPerLaneLobe {
   }
 
   using Batches = std::array<F, PerLaneKernel::kMaxDegree + 1>;
-  // Horner's rule from c[degree] down. Degrees 0 to 3, the setup's usual, by branches the
-  // predictor learns (a jump table's indirect jump cost 12% of the kernel at n = 1000); the
-  // others enter the chain at the degree's step, where a loop measured 6% slower.
-  [[gnu::always_inline]] static F horner(F x, const Batches& c, int degree) {
-    static_assert(PerLaneKernel::kMaxDegree == 20, "one step per degree below");
-    if (degree == 0) return c[0];
-    if (degree == 1) return mul_add(c[1], x, c[0]);
-    if (degree == 2) return mul_add(mul_add(c[2], x, c[1]), x, c[0]);
-    if (degree == 3) return mul_add(mul_add(mul_add(c[3], x, c[2]), x, c[1]), x, c[0]);
-    F r = c[std::size_t(degree)];
-    switch (degree) {
-#define KUTLOG_STEP(d) case d: r = mul_add(r, x, c[d - 1]); [[fallthrough]];
-      KUTLOG_STEP(20) KUTLOG_STEP(19) KUTLOG_STEP(18) KUTLOG_STEP(17) KUTLOG_STEP(16)
-      KUTLOG_STEP(15) KUTLOG_STEP(14) KUTLOG_STEP(13) KUTLOG_STEP(12) KUTLOG_STEP(11)
-      KUTLOG_STEP(10) KUTLOG_STEP(9) KUTLOG_STEP(8) KUTLOG_STEP(7) KUTLOG_STEP(6)
-      KUTLOG_STEP(5) KUTLOG_STEP(4) KUTLOG_STEP(3) KUTLOG_STEP(2) KUTLOG_STEP(1)
-#undef KUTLOG_STEP
-      default: break;
-    }
-    return r;
-  }
 
   const PerLaneKernel& kernel_;
   bool normalized_;
@@ -324,6 +327,55 @@ class PreparedPowerPoly {
   F t_zero_, n_;
   std::array<F, PowerPolyKernel::kMaxLogDegree + 1> log_;
   std::array<F, PowerPolyKernel::kPreciseExpDegree + 1> exp_;
+};
+
+// scale(n) t^n per lane by a PerLanePowerPolyKernel (kutlog/lobe.hpp): kExpDegree and kScale
+// must be the kernel's; the log's and scale's degrees are taken as PerLaneLobe takes its own.
+template <class Arch, int kExpDegree, PerLanePowerPolyKernel::Scale kScale>
+class PreparedPerLanePowerPoly {
+ public:
+  using F = floats<Arch>;
+  explicit PreparedPerLanePowerPoly(const PerLanePowerPolyKernel& kernel)
+      : kernel_(kernel), scale_slope_(kernel.scale_slope) {
+    for (std::size_t i = 0; i < log_.size(); ++i)
+      log_[i] = F(kernel.log[i]), scale_[i] = F(kernel.scale[i]);
+    for (std::size_t i = 0; i <= std::size_t(kExpDegree); ++i) exp_[i] = F(kernel.exp[i]);
+  }
+
+  [[gnu::always_inline]] F operator()(F t, F n) const {
+    using I = ints<Arch>;
+    const F one(1.0f);
+    // max(n_min, n) and min(n_max, .) in this order keep NaN, as min(1, t) and max(t_floor, .).
+    const F n_clamped = xsimd::min(F(kernel_.n_max), xsimd::max(F(kernel_.n_min), n));
+    const F x = xsimd::max(F(kernel_.t_floor), xsimd::min(one, t)) - one;  // exact
+    const F y = n_clamped * (x * detail::horner_to(x, log_, kernel_.log_degree));
+    // 2^y = 2^i E(y - i), i = round(y), as PreparedPowerPoly; y <= y_zero is cut below, where
+    // the exponent's bits could wrap.
+    const F shifter(0x1.8p23f), shifted = y + shifter, f = y - (shifted - shifter);
+    F power = exp_[std::size_t(kExpDegree)];
+    for (int i = kExpDegree; i-- > 0;) power = mul_add(power, f, exp_[std::size_t(i)]);
+    using Scale = PerLanePowerPolyKernel::Scale;
+    if constexpr (kScale == Scale::fitted) {
+      power *= mul_add(scale_slope_, n_clamped,
+                       detail::horner_to(n_clamped, scale_, kernel_.scale_degree));
+    } else if constexpr (kScale == Scale::reciprocal) {
+      F reciprocal = xsimd::reciprocal(n_clamped);  // 12 or 14 bits, refined by one Newton step
+      reciprocal = mul_add(reciprocal, neg_mul_add(n_clamped, reciprocal, one), reciprocal);
+      constexpr double kPi = 3.14159265358979323846;
+      power *= mul_add(reciprocal, F(float(1 / kPi)),
+                       mul_add(n_clamped, F(float(1 / (8 * kPi))), F(float(6 / (8 * kPi)))));
+    }
+    const I exponent = xsimd::bitwise_cast<I>(shifted) << 23;
+    const F value = xsimd::bitwise_cast<F>(xsimd::bitwise_cast<I>(power) + exponent);
+    return zero_where(y <= F(kernel_.y_zero), value);  // NaN y: false, NaN kept
+  }
+
+ private:
+  using Batches = std::array<F, PerLanePowerPolyKernel::kMaxDegree + 1>;
+  const PerLanePowerPolyKernel& kernel_;
+  F scale_slope_;
+  Batches log_, scale_;
+  std::array<F, PerLanePowerPolyKernel::kPreciseExpDegree + 1> exp_;
 };
 
 // Schlick's t / (n - n t + t), t clamped to [0, 1].
