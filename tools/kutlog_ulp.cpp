@@ -122,45 +122,82 @@ int measure_lobes(const std::vector<kutlog::Arch>& archs, const std::vector<std:
   return 0;
 }
 
+// Sweeps t for t^n (0 from `cut` down): every float from 2^16 floats below the cut to 1, every
+// 61st below, and t > 1; errors in the lobes' units, relative to `scale`.
+template <class Evaluate>
+LobeErrors sweep_power(float cut, double n, double scale, const Evaluate& evaluate) {
+  const std::uint32_t first = order_key(-1.0f), cut_key = std::max(order_key(cut), first),
+                      near_cut = cut_key - std::min(cut_key - first, 1u << 16),
+                      last = order_key(std::nextafter(1.0f, 2.0f));
+  LobeErrors errors;
+  std::vector<float> t, out;
+  for (std::uint64_t key = first; key <= last;) {  // in chunks of 2^16 floats
+    t.clear();
+    for (; key <= last && t.size() < (1u << 16); key += key < near_cut ? 61 : 1)
+      t.push_back(float_of_order_key(std::uint32_t(key)));
+    out.resize(t.size());
+    evaluate(t, out);
+    for (std::size_t i = 0; i < t.size(); ++i)
+      errors.add(t[i], out[i], scale, t[i] <= 0 ? 0.0 : std::pow(std::min(double(t[i]), 1.0), n));
+  }
+  return errors;
+}
+
+std::vector<std::string> error_cells(const LobeErrors& errors) {
+  return {fmt::format("{:.3g}", errors.max_abs_error), fmt::format("{:.3f}", errors.max_epicenter_ulp),
+          fmt::format("{:.9g}", errors.worst_abs_input), fmt::format("{:.9g}", errors.min_output),
+          fmt::format("{:.9g}", errors.max_output)};
+}
+
 // --function pow_poly: kutlog::PowerPoly, the benchmarks' polynomial pow, in the lobes' units
 // (relative to the peak; ulps where t^n >= 0.6), unnormalized and with the Blinn-Phong coef, per
-// --n and arch: every float t from 2^16 floats below its cut to 1, every 61st below, and t > 1.
+// --n and arch. --function pow_poly_perlane: kutlog::PerLanePowerPoly on [n/2, 2n] for each
+// --n, at 9 lanes' n spread log-evenly over it, the worst of them.
 int measure_power_poly(const std::vector<kutlog::Arch>& archs,
                        const std::vector<std::string>& variants,
-                       const std::vector<std::string>& n_list, Format format) {
+                       const std::vector<std::string>& n_list, bool per_lane, Format format) {
   Table table({"function", "arch", "variant", "n", "max_abs_err", "max_ulp_epicenter",
                "worst_input", "min_output", "max_output"});
   for (kutlog::Arch arch : archs) {
     const kutlog::ScopedArch forced(arch);
-    for (const std::string& variant : variants)
+    for (const std::string& variant_name : variants)
       for (const std::string& n_text : n_list)
         for (bool normalized : {false, true}) {
           const double n = exponent_of(n_text, 1);
-          const double scale = normalized ? kutlog::ref::blinn_phong_exact_coef(n) : 1.0;
-          const kutlog::PowerPoly power(
-              n, variant == "precise" ? kutlog::Variant::precise : kutlog::Variant::fast, scale);
-          const std::uint32_t cut = order_key(power.kernel().t_zero), first = order_key(-1.0f),
-                              near_cut = cut - std::min(cut - first, 1u << 16),
-                              last = order_key(std::nextafter(1.0f, 2.0f));
+          const kutlog::Variant variant =
+              variant_name == "precise" ? kutlog::Variant::precise : kutlog::Variant::fast;
           LobeErrors errors;
-          std::vector<float> t, out;
-          for (std::uint64_t key = first; key <= last;) {  // in chunks of 2^16 floats
-            t.clear();
-            for (; key <= last && t.size() < (1u << 16); key += key < near_cut ? 61 : 1)
-              t.push_back(float_of_order_key(std::uint32_t(key)));
-            out.resize(t.size());
-            power.eval(t.data(), out.data(), t.size());
-            for (std::size_t i = 0; i < t.size(); ++i)
-              errors.add(t[i], out[i], scale,
-                         t[i] <= 0 ? 0.0 : std::pow(std::min(double(t[i]), 1.0), n));
+          if (per_lane) {
+            const kutlog::PerLanePowerPoly power(n / 2, 2 * n, variant,
+                                                 normalized ? kutlog::Normalization::exact_coef
+                                                            : kutlog::Normalization::none);
+            const double bound = variant == kutlog::Variant::precise ? 0x1p-20 : 0x1p-16;
+            for (int j = 0; j <= 8; ++j) {
+              const double lane_n = double(float(n / 2 * std::exp2(j / 4.0)));
+              const double scale = normalized ? kutlog::ref::blinn_phong_exact_coef(lane_n) : 1.0;
+              std::vector<float> lanes;
+              const LobeErrors lane = sweep_power(
+                  float(std::exp(std::log(bound / 2) / lane_n)), lane_n, scale,
+                  [&](const std::vector<float>& t, std::vector<float>& out) {
+                    lanes.assign(t.size(), float(lane_n));
+                    power.eval(t.data(), lanes.data(), out.data(), t.size());
+                  });
+              errors.merge(lane);
+            }
+          } else {
+            const double scale = normalized ? kutlog::ref::blinn_phong_exact_coef(n) : 1.0;
+            const kutlog::PowerPoly power(n, variant, scale);
+            errors = sweep_power(power.kernel().t_zero, n, scale,
+                                 [&](const std::vector<float>& t, std::vector<float>& out) {
+                                   power.eval(t.data(), out.data(), t.size());
+                                 });
           }
-          table.add_row({normalized ? "pow_poly_normalized" : "pow_poly",
-                         std::string(kutlog::arch_name(arch)), variant, fmt::format("{:g}", n),
-                         fmt::format("{:.3g}", errors.max_abs_error),
-                         fmt::format("{:.3f}", errors.max_epicenter_ulp),
-                         fmt::format("{:.9g}", errors.worst_abs_input),
-                         fmt::format("{:.9g}", errors.min_output),
-                         fmt::format("{:.9g}", errors.max_output)});
+          std::vector<std::string> row = {
+              std::string(per_lane ? "pow_poly_perlane" : "pow_poly") +
+                  (normalized ? "_normalized" : ""),
+              std::string(kutlog::arch_name(arch)), variant_name, fmt::format("{:g}", n)};
+          for (std::string& cell : error_cells(errors)) row.push_back(std::move(cell));
+          table.add_row(row);
         }
   }
   table.print(format);
@@ -181,7 +218,8 @@ int main(int argc, char** argv) {
       "[-1, 1], for each --n, --k, --q: max_abs_err relative to the lobe's peak (1, or coef for\n"
       "kutlog_normalized), max_ulp_epicenter where the lobe is >= 0.6 of its peak.\n"
       "--function pow_poly measures kutlog::PowerPoly, the benchmarks' polynomial t^n, in the\n"
-      "same units for each --n and --variant.",
+      "same units for each --n and --variant; --function pow_poly_perlane its per-lane form,\n"
+      "kutlog::PerLanePowerPoly, on [n/2, 2n] (n/2 >= 44 precise, 36 fast).",
       "kutlog-ulp");
   std::vector<std::string> arch_names{"all"};
   std::string format_name = "text";
@@ -246,17 +284,20 @@ int main(int argc, char** argv) {
       for (const std::string& n : n_list) exponent_of(n, 1);  // validates before any sweep
       return measure_lobes(archs, variants, n_list, k_list, q_list, threads, parse_format(format_name));
     }
-    if (std::find(functions.begin(), functions.end(), "pow_poly") != functions.end()) {
-      if (functions.size() > 1)
-        throw std::invalid_argument("--function pow_poly measures the polynomial pow; give it alone");
-      for (const std::string& n : n_list) exponent_of(n, 1);
-      return measure_power_poly(archs, variants, n_list, parse_format(format_name));
-    }
+    for (const char* power : {"pow_poly", "pow_poly_perlane"})
+      if (std::find(functions.begin(), functions.end(), power) != functions.end()) {
+        if (functions.size() > 1)
+          throw std::invalid_argument(fmt::format("--function {} measures a polynomial pow; give it alone",
+                                                  power));
+        for (const std::string& n : n_list) exponent_of(n, 1);
+        return measure_power_poly(archs, variants, n_list, power == std::string("pow_poly_perlane"),
+                                  parse_format(format_name));
+      }
     for (const std::string& name : functions)
       if (name != "pow" && !find_unary_function(name))
         throw std::invalid_argument("unknown function '" + name + "'; valid: " +
                                     fmt::format("{}", fmt::join(math_function_names(), ", ")) +
-                                    ", kutlog, pow_poly");
+                                    ", kutlog, pow_poly, pow_poly_perlane");
     if (profile && functions.size() != 1)
       throw std::invalid_argument("--profile measures one --function at a time");
     if (profile && summary) throw std::invalid_argument("--profile and --summary exclude each other");
