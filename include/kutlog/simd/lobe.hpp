@@ -25,7 +25,10 @@ inline Batch clamp_zero_to(Batch value, Batch upper) {
 // 12% of the per-lane lobe at n = 1000); the others enter the chain at the degree's step,
 // where a loop measured 6% slower.
 template <class Batch>
-[[gnu::always_inline]] inline Batch horner_to(Batch x, const std::array<Batch, 21>& c, int degree) {
+[[gnu::always_inline]] inline Batch horner_to(
+    Batch x, const std::array<Batch, PerLaneKernel::kMaxDegree + 1>& c, int degree) {
+  static_assert(PerLaneKernel::kMaxDegree == 20 && PerLanePowerPolyKernel::kMaxDegree == 20,
+                "one step per degree below");
   if (degree == 0) return c[0];
   if (degree == 1) return mul_add(c[1], x, c[0]);
   if (degree == 2) return mul_add(mul_add(c[2], x, c[1]), x, c[0]);
@@ -195,8 +198,8 @@ class PreparedPerLaneLobe {
       y_offset = y - F(kernel_.y_center);
       c_squared = n_clamped * detail::horner_to(y_offset, h_, kernel_.h_degree);
     }
-    // min(w_limit, .) keeps NaN; past w_limit every lane's v >= v_cut, with G increasing
-    // without it.
+    // Past w_limit every lane's v >= v_cut: clamped there (min keeps NaN), or, where G's
+    // coefficients are positive, by w G(w) growing on its own.
     F w = F(1.0f) - xsimd::min(F(1.0f), t);
     if constexpr (kWClamped) w = xsimd::min(F(kernel_.w_limit), w);
     const F v = c_squared * (w * detail::horner_to(w, g_, kernel_.g_degree));
