@@ -156,9 +156,11 @@ TEST_P(LobePerArch, PerLanePowerPolyWithinItsBoundWithTheDataRule) {
   for (Variant variant : tools::kLobeVariants) {
     const double bound = kLobeBounds[variant == Variant::precise ? 2 : 3].promised_abs_error;
     double largest = 0;
-    for (auto [n_min, n_max] : {std::pair{500.0, 2000.0}, std::pair{46.0, 1e5},
-                                std::pair{44.0, 44.0}, std::pair{1e4, 1e8}})
+    for (const std::pair<double, double>& range :
+         {std::pair{500.0, 2000.0}, std::pair{46.0, 1e5}, std::pair{44.0, 44.0},
+          std::pair{1e4, 1e8}})
       for (Normalization normalization : tools::kLobeNormalizations) {
+        const double n_min = range.first, n_max = range.second;  // captured below: not a binding
         const PerLanePowerPoly power(n_min, n_max, variant, normalization);
         std::mt19937 engine(7);
         std::uniform_real_distribution<double> unit(0, 1);
