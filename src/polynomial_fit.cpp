@@ -1,7 +1,7 @@
 #include "polynomial_fit.hpp"
 
-#include <array>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numbers>

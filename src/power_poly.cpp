@@ -1,11 +1,11 @@
 // Setup of a PowerPoly (kutlog/lobe.hpp): the two polynomials of 2^(n log2 t) for one n, each
 // of the lowest degree whose Chebyshev truncation is well inside the variant's bound.
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
-#include <algorithm>
 #include <functional>
-#include <optional>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -151,9 +151,10 @@ PerLanePowerPoly::PerLanePowerPoly(double n_min, double n_max, Variant variant,
     // scale(n) = slope n + S(n), as PerLaneLobe's coef, within half the bound, where S's
     // degree is at most 3; else the closed form and its reciprocal, five operations.
     const auto coef = [](Real n) { return Real(ref::blinn_phong_exact_coef(double(n))); };
-    const float slope = float((coef(n_max) - coef(n_min)) / (n_max - n_min));
+    const float slope =
+        n_max > n_min ? float((coef(n_max) - coef(n_min)) / (n_max - n_min)) : 0.0f;
     const std::optional<detail::FloatFit> scale =
-        detail::fit_float(coef, n_min, n_max, 0, bound / 2, n_max > n_min ? slope : 0);
+        detail::fit_float(coef, n_min, n_max, 0, bound / 2, slope);
     k.scale_form = scale && scale->degree <= 3 ? Scale::fitted : Scale::reciprocal;
     if (k.scale_form == Scale::fitted) {
       k.scale_slope = scale->slope;

@@ -25,10 +25,7 @@
 
 namespace kutlog {
 
-// PerLaneLobe's promise for its normalized peak against coef_exact(n) (kutlog/accuracy.hpp).
-constexpr double per_lane_peak_bound(Variant variant) {
-  return variant == Variant::fast ? kPerLaneFastPeakError : kPerLanePeakError;
-}
+using tools::per_lane_peak_bound;
 
 inline std::vector<LobeCase> accuracy_grid() {
   std::vector<LobeCase> grid;

@@ -142,9 +142,9 @@ void fuzz_per_lane_lobe(FuzzedDataProvider& data) {
                                   error, lane_n, bound));
         // The hard contract against the reference's peak: 1, or coef within the variant's
         // peak bound.
-        const double peak_error =
-            variant == Variant::fast ? kPerLaneFastPeakError : kPerLanePeakError;
-        const double peak = normalization == Normalization::none ? 1.0 : scale * (1 + peak_error);
+        const double peak = normalization == Normalization::none
+                                ? 1.0
+                                : scale * (1 + tools::per_lane_peak_bound(variant));
         if (!(out >= 0 && out <= peak))
           fail(call, lane_message(i, "%.9g outside [0, %.9g] (n = %.9g)", double(out), peak, lane_n));
       });

@@ -8,9 +8,15 @@
 #include <cstdint>
 #include <limits>
 
+#include "kutlog/accuracy.hpp"
 #include "kutlog/lobe.hpp"
 
 namespace kutlog::tools {
+
+// PerLaneLobe's promise for its normalized peak against coef_exact(n) (kutlog/accuracy.hpp).
+constexpr double per_lane_peak_bound(Variant variant) {
+  return variant == Variant::fast ? kPerLaneFastPeakError : kPerLanePeakError;
+}
 
 // Errors of the value returned, out, against the exact scale * F (scale = coef when
 // normalized, else 1): kutlog/accuracy.hpp's units.

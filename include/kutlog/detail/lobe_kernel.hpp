@@ -254,9 +254,9 @@ struct PerLanePowerPolyKernel {
   Scale scale_form = Scale::none;
   float scale_slope = 0;
   int scale_degree = 0;
-  Coefficients log{};                                           // log2(1 + x) / x
+  Coefficients log{};                              // log2(1 + x) / x
   std::array<float, kPreciseExpDegree + 1> exp{};  // 2^f
-  Coefficients scale{};
+  Coefficients scale{};                            // S, where fitted
 };
 
 }  // namespace kutlog
