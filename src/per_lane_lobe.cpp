@@ -172,6 +172,7 @@ PerLaneKernel fit_kernel(double n_min, double n_max, int k, double Q, Variant va
                                                    : Power::in_double;
   const double margin = variant == Variant::fast ? kFastCutMargin : kPreciseCutMargin;
   kernel.v_cut = float(double(kVCut) * (1 - margin));
+  kernel.convert_for_scalar();
   return kernel;
 }
 

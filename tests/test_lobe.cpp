@@ -385,9 +385,14 @@ TEST_P(LobePerArch, PerLaneZeroFarPastTheCut) {
     for (Variant variant : {Variant::precise, Variant::fast})
       for (Normalization normalization : {Normalization::none, Normalization::exact_coef}) {
         lobe.eval(t.data(), n.data(), out.data(), t.size(), variant, normalization);
-        for (std::size_t i = 0; i < t.size(); ++i)
+        for (std::size_t i = 0; i < t.size(); ++i) {
           ASSERT_EQ(out[i], 0.0f) << "k = " << c.k << ", n = " << n[i] << ", t = " << t[i] << ", "
                                   << variant_name(variant);
+          // The scalar path clamps w at w_limit too, and zeroes by the cut's mask.
+          ASSERT_EQ(lobe.eval(t[i], n[i], variant, normalization), 0.0f)
+              << "scalar, k = " << c.k << ", n = " << n[i] << ", t = " << t[i] << ", "
+              << variant_name(variant);
+        }
       }
   }
 }

@@ -195,33 +195,76 @@ struct PerLaneKernel {
   static constexpr int kPreciseBaseDegree = 4, kFastBaseDegree = 3;
   Coefficients h{}, coef_k{}, g{}, r{}, coef_n{};
 
-  // The SIMD kernel's formulas in double, rounded once.
-  float evaluate(float t, float n, bool normalized) const noexcept {
-    if (t != t || n != n) return t + n;  // NaN
-    // Past every lane's cut-off: a test of t alone, which resolves without the reciprocal.
-    const double w = t < 1.0f ? 1.0 - double(t) : 0.0;
-    if (w >= double(w_limit)) return 0.0f;
-    const double n_clamped = double(n < n_min ? n_min : n > n_max ? n_max : n);
-    const double y_offset = 1.0 / n_clamped - double(y_center);
-    const double c_squared = in_n ? (double(c_squared_slope) + double(c_squared_slope_lo)) *
-                                            n_clamped + double(h[1])
-                                  : n_clamped * horner(h, h_degree, y_offset);
-    const double v = c_squared * (w * horner(g, g_degree, w));
-    if (v >= double(v_cut)) return 0.0f;
-    // In [0, 1], as in the SIMD kernel (kutlog/simd/lobe.hpp).
-    const double value = detail::integer_power(1.0 - v * horner(r, r_degree, v), k);
-    if (!normalized) return float(value);
-    const double coef = in_n ? double(coef_n_slope) * n_clamped +
-                                   horner(coef_n, coef_n_degree, n_clamped)
-                             : n_clamped * horner(coef_k, k_degree, y_offset);
-    return float(value * coef);
+  // The scalar path's constants, converted to double once by the setup (in_double()): per call,
+  // converting each float cost more than the arithmetic on it.
+  struct InDouble {
+    using Coefficients = std::array<double, kMaxDegree + 1>;
+    double w_limit = 0, v_cut = 0, y_center = 0, c_squared_slope = 0, coef_n_slope = 0;
+    Coefficients h{}, coef_k{}, g{}, r{}, coef_n{};
+  };
+  InDouble scalar;
+  void convert_for_scalar() noexcept {
+    const auto convert = [](const Coefficients& from, InDouble::Coefficients& to) {
+      for (std::size_t i = 0; i < from.size(); ++i) to[i] = double(from[i]);
+    };
+    scalar.w_limit = double(w_limit);
+    scalar.v_cut = double(v_cut);
+    scalar.y_center = double(y_center);
+    scalar.c_squared_slope = double(c_squared_slope) + double(c_squared_slope_lo);
+    scalar.coef_n_slope = double(coef_n_slope);
+    convert(h, scalar.h);
+    convert(coef_k, scalar.coef_k);
+    convert(g, scalar.g);
+    convert(r, scalar.r);
+    convert(coef_n, scalar.coef_n);
+  }
+
+  // The SIMD kernel's formulas in double, rounded once. Branch-free past NaN: fragments in
+  // random order, half past their cut-off, cost what they cost inside the lobe.
+  [[gnu::always_inline]] float evaluate(float t, float n, bool normalized) const noexcept {
+    if (t != t || n != n) [[unlikely]] return t + n;  // NaN
+    const InDouble& d = scalar;
+    // Past w_limit every lane is past its cut-off: w clamped there, v passes v_cut below.
+    const double w = std::min(1.0 - double(std::min(t, 1.0f)), d.w_limit);
+    const double n_clamped = double(std::clamp(n, n_min, n_max));
+    double c_squared, y_offset = 0;
+    if (in_n) {
+      c_squared = d.c_squared_slope * n_clamped + d.h[1];
+    } else {
+      y_offset = 1.0 / n_clamped - d.y_center;
+      c_squared = n_clamped * horner(d.h, h_degree, y_offset);
+    }
+    const double v = c_squared * (w * horner(d.g, g_degree, w));
+    // In [0, 1] where v < v_cut, as in the SIMD kernel (kutlog/simd/lobe.hpp); past it, any
+    // finite or infinite value, zeroed below.
+    double value = detail::integer_power(1.0 - v * base_polynomial(v), k);
+    if (normalized)
+      value *= in_n ? d.coef_n_slope * n_clamped + horner(d.coef_n, coef_n_degree, n_clamped)
+                    : n_clamped * horner(d.coef_k, k_degree, y_offset);
+    // 0 where v >= v_cut, by a mask: a branch would mispredict there half the time.
+    const std::uint64_t inside = -std::uint64_t(v < d.v_cut);
+    return float(std::bit_cast<double>(std::bit_cast<std::uint64_t>(value) & inside));
   }
 
  private:
-  static double horner(const Coefficients& coefficients, int degree, double x) noexcept {
-    std::size_t i = std::size_t(degree);
-    double result = double(coefficients[i]);
-    while (i-- > 0) result = result * x + double(coefficients[i]);
+  // R by Estrin's scheme at the variants' degrees: on the chain of dependent operations that
+  // sets the scalar path's speed, R's Horner steps were the longest part.
+  [[gnu::always_inline]] double base_polynomial(double v) const {
+    static_assert(kFastBaseDegree == 3 && kPreciseBaseDegree == 4);
+    const InDouble::Coefficients& c = scalar.r;
+    const double square = v * v, low = c[1] * v + c[0], high = c[3] * v + c[2];
+    if (r_degree == kFastBaseDegree) return high * square + low;
+    return (c[4] * square + high) * square + low;
+  }
+  // Degrees up to 3, the setup's usual, written out behind branches the predictor learns.
+  [[gnu::always_inline]] static double horner(const InDouble::Coefficients& c, int degree,
+                                              double x) {
+    if (degree == 0) return c[0];
+    if (degree == 1) return c[1] * x + c[0];
+    if (degree == 2) return (c[2] * x + c[1]) * x + c[0];
+    if (degree == 3) return ((c[3] * x + c[2]) * x + c[1]) * x + c[0];
+    double result = c[std::size_t(degree)];
+    for (std::size_t i = std::size_t(degree); i-- > 0;) result = result * x + c[i];
     return result;
   }
 };
