@@ -1,10 +1,10 @@
 // libFuzzer target: the lobe kernels of kutlog/lobe.hpp on every arch this CPU supports --
-// Lobe::eval (both variants, both normalizations), PerLaneLobe::eval and the baselines
-// blinn_phong_xsimd, blinn_phong_u10 and schlick -- against the scalar reference
-// (kutlog/reference.hpp) within the bounds of kutlog/accuracy.hpp, with the data rule of every
-// lobe (t >= 1 gives the peak, t <= 0 and t at or below the cut give 0, NaN gives NaN), the
-// constructors' validation, any count and misalignment, in place, and nothing written outside
-// the output.
+// Lobe::eval (both variants, both normalizations), PerLaneLobe::eval (arrays and scalar),
+// PerLanePowerPoly::eval and the baselines blinn_phong_xsimd, blinn_phong_u10 and schlick --
+// against the scalar reference (kutlog/reference.hpp) within the bounds of
+// kutlog/accuracy.hpp, with the data rule of every lobe (t >= 1 gives the peak, t <= 0 and t
+// at or below the cut give 0, NaN gives NaN), the constructors' validation, any count and
+// misalignment, in place, and nothing written outside the output.
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -71,6 +71,56 @@ struct PerLaneParameters {
   }
 };
 
+// PerLanePowerPoly(n_min, n_max, variant, normalization) on a PerLaneLobe's lanes: within
+// PerLaneLobe's bounds of scale(n) t^n (scale 1 or the Blinn-Phong coef), 0 <= out <= the
+// peak within that bound, the data rule; the documented domain n_min >= 44 (fast 36).
+void fuzz_per_lane_power_poly(double n_min, double n_max, Variant variant,
+                              Normalization normalization, const ArrayArguments& arguments,
+                              const std::vector<float>& n_values, const float* n) {
+  char text[200];
+  std::snprintf(text, sizeof text, "n_min=%.17g n_max=%.17g variant=%s normalization=%s", n_min,
+                n_max, variant_name(variant).data(), normalization_name(normalization).data());
+  Call call{"kutlog::PerLanePowerPoly::eval", text};
+  const bool valid = n_min >= (variant == Variant::fast ? 36 : 44);  // n_max checked above
+  static Cache<std::tuple<double, double, Variant, Normalization>, PerLanePowerPoly> powers;
+  const PerLanePowerPoly* power = nullptr;
+  check_constructor(
+      valid,
+      [&] {
+        const auto make = [&] { return PerLanePowerPoly(n_min, n_max, variant, normalization); };
+        if (!valid) {
+          make();  // not cached: it must throw at once
+          return;
+        }
+        power = &powers.get({n_min, n_max, variant, normalization}, make);
+      },
+      call);
+  if (!power) return;
+  call.arrays = {{"n", n}};
+  const double bound = kLobeBounds[variant == Variant::fast ? 3 : 2].max_abs_error();
+  run_on_every_arch(
+      arguments, "t", call, [&](const float* t, float* out) { power->eval(t, n, out, call.count); },
+      [&](const Call& call, std::size_t i, float t, float out) {
+        if (std::isnan(t) || std::isnan(n_values[i])) {
+          if (!std::isnan(out)) fail(call, lane_message(i, "%.9g where NaN is due", double(out)));
+          return;
+        }
+        if (t <= 0 && out != 0) fail(call, lane_message(i, "%.9g where 0 is due", double(out)));
+        const double lane_n = std::clamp(double(n_values[i]), n_min, n_max);
+        const double scale = normalization == Normalization::none
+                                 ? 1.0
+                                 : ref::blinn_phong_exact_coef(lane_n);
+        const double exact = t <= 0 ? 0.0 : scale * std::pow(std::min(1.0, double(t)), lane_n);
+        const double error = std::fabs(out - exact) / scale;
+        if (!(error <= bound))
+          fail(call, lane_message(i, "%.9g against %.17g: error %.3g of the peak (n = %.9g), "
+                                     "bound %.3g", double(out), exact, error, lane_n, bound));
+        if (!(out >= 0 && out <= scale * (1 + bound)))
+          fail(call, lane_message(i, "%.9g outside [0, %.9g] (n = %.9g)", double(out),
+                                  scale * (1 + bound), lane_n));
+      });
+}
+
 void fuzz_per_lane_lobe(FuzzedDataProvider& data) {
   const LobeParameters base = lobe_parameters(data);
   const double ratio = data.PickValueInArray({1.0, 1.5, 2.0, 10.0, 100.0, 1e4, 0.5});
@@ -125,29 +175,42 @@ void fuzz_per_lane_lobe(FuzzedDataProvider& data) {
       [&](const float* t, float* out) {
         lobe->eval(t, n.data(), out, call.count, variant, normalization);
       },
-      [&](const Call& call, std::size_t i, float t, float out) {
-        if (std::isnan(t) || std::isnan(n_values[i])) {
-          if (!std::isnan(out)) fail(call, lane_message(i, "%.9g where NaN is due", double(out)));
-          return;
+      [&](const Call& call, std::size_t i, float t, float array_out) {
+        // The array's lane, then the scalar path's eval(t, n) on the same lane.
+        const float outs[] = {array_out, lobe->eval(t, n_values[i], variant, normalization)};
+        for (int scalar = 0; scalar < 2; ++scalar) {
+          const float out = outs[scalar];
+          const char* path = scalar ? "scalar eval: " : "";
+          if (std::isnan(t) || std::isnan(n_values[i])) {
+            if (!std::isnan(out))
+              fail(call, lane_message(i, "%s%.9g where NaN is due", path, double(out)));
+            continue;
+          }
+          if (t <= 0 && out != 0)
+            fail(call, lane_message(i, "%s%.9g where 0 is due", path, double(out)));
+          if (t >= 1 && normalization == Normalization::none && out != 1)
+            fail(call, lane_message(i, "%s%.9g where 1 is due", path, double(out)));
+          const double lane_n = std::clamp(double(n_values[i]), parameters.n_min, parameters.n_max);
+          const ref::KutlogLobe reference(lane_n, parameters.k, parameters.Q);
+          const double scale = normalization == Normalization::none ? 1.0 : reference.coef_exact();
+          const double error = tools::lobe_abs_error(out, scale, reference.eval(t));
+          if (!(error <= bound))
+            fail(call, lane_message(i, "%serror %.3g relative to the peak (n = %.9g), bound %.3g",
+                                    path, error, lane_n, bound));
+          // The hard contract against the reference's peak: 1, or coef within the variant's
+          // peak bound.
+          const double peak = normalization == Normalization::none
+                                  ? 1.0
+                                  : scale * (1 + tools::per_lane_peak_bound(variant));
+          if (!(out >= 0 && out <= peak))
+            fail(call, lane_message(i, "%s%.9g outside [0, %.9g] (n = %.9g)", path, double(out),
+                                    peak, lane_n));
         }
-        if (t <= 0 && out != 0) fail(call, lane_message(i, "%.9g where 0 is due", double(out)));
-        if (t >= 1 && normalization == Normalization::none && out != 1)
-          fail(call, lane_message(i, "%.9g where 1 is due", double(out)));
-        const double lane_n = std::clamp(double(n_values[i]), parameters.n_min, parameters.n_max);
-        const ref::KutlogLobe reference(lane_n, parameters.k, parameters.Q);
-        const double scale = normalization == Normalization::none ? 1.0 : reference.coef_exact();
-        const double error = tools::lobe_abs_error(out, scale, reference.eval(t));
-        if (!(error <= bound))
-          fail(call, lane_message(i, "error %.3g relative to the peak (n = %.9g), bound %.3g",
-                                  error, lane_n, bound));
-        // The hard contract against the reference's peak: 1, or coef within the variant's
-        // peak bound.
-        const double peak = normalization == Normalization::none
-                                ? 1.0
-                                : scale * (1 + tools::per_lane_peak_bound(variant));
-        if (!(out >= 0 && out <= peak))
-          fail(call, lane_message(i, "%.9g outside [0, %.9g] (n = %.9g)", double(out), peak, lane_n));
       });
+  // The per-lane peer on the same lanes, chosen last: the inputs above replay as they were.
+  if (data.ConsumeBool())
+    fuzz_per_lane_power_poly(parameters.n_min, parameters.n_max, variant, normalization,
+                             arguments, n_values, n.data());
 }
 
 // blinn_phong_xsimd, blinn_phong_u10 and schlick: out = scale * F(t) with the reference's F.
