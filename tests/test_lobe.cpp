@@ -38,6 +38,9 @@ namespace kutlog {
 namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+// A NaN whose payload's low bits are set (the fuzzer's): an addition to exponent bits turned
+// it into a number.
+const float kNaNWithPayload = std::bit_cast<float>(0xfff278d6u);
 
 class LobePerArch : public testing::TestWithParam<Arch> {
  protected:
@@ -107,7 +110,7 @@ TEST_P(LobePerArch, PowerPolyWithinItsBoundWithTheDataRule) {
         const std::uint32_t zero_key = tools::order_key(power.kernel().t_zero),
                             one_key = tools::order_key(1.0f), first = tools::order_key(-1.0f);
         const std::uint32_t stride = std::max<std::uint32_t>(1, (one_key - zero_key) >> 18);
-        t = {1.5f, INFINITY, 0.0f, -0.0f, -1.0f, -INFINITY, 1e-40f, kNaN};
+        t = {1.5f, INFINITY, 0.0f, -0.0f, -1.0f, -INFINITY, 1e-40f, kNaN, kNaNWithPayload};
         for (std::uint32_t key = first; key < zero_key; key += 65521)
           t.push_back(tools::float_of_order_key(key));
         for (std::uint32_t key = zero_key - std::min(zero_key - first, 1u << 12); key <= one_key;
@@ -164,7 +167,8 @@ TEST_P(LobePerArch, PerLanePowerPolyWithinItsBoundWithTheDataRule) {
         const PerLanePowerPoly power(n_min, n_max, variant, normalization);
         std::mt19937 engine(7);
         std::uniform_real_distribution<double> unit(0, 1);
-        std::vector<float> t = {1.0f, 1.5f, INFINITY, 0.0f, -0.0f, -1.0f, -INFINITY, kNaN, 0.5f};
+        std::vector<float> t = {1.0f,  1.5f,          INFINITY, 0.0f, -0.0f, -1.0f, -INFINITY,
+                                kNaN, kNaNWithPayload, 0.5f};
         std::vector<float> n(t.size(), float(n_min));
         for (int i = 0; i < 1 << 14; ++i) {
           const double lane_n = n_min * std::pow(n_max / n_min, 1.2 * unit(engine) - 0.1);
@@ -173,6 +177,7 @@ TEST_P(LobePerArch, PerLanePowerPolyWithinItsBoundWithTheDataRule) {
           t.push_back(float(std::exp2(-30 * unit(engine) / std::clamp(lane_n, n_min, n_max))));
         }
         t.push_back(0.5f), n.push_back(kNaN);
+        t.push_back(0.5f), n.push_back(kNaNWithPayload);
         std::vector<float> out(t.size()), peak(t.size()), ones(t.size(), 1.0f);
         power.eval(t.data(), n.data(), out.data(), t.size());
         power.eval(ones.data(), n.data(), peak.data(), t.size());

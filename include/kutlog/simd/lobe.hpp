@@ -306,12 +306,13 @@ class PreparedPowerPoly {
       const F x = capped - one;  // exact for t in [1/2, 1]
       y = x * horner<kLogDegree>(x, log_);
     }
-    // y <= 0; 2^y = 2^i E(y - i), i = round(y): y + 1.5 2^23 holds i in its low bits (whose
-    // shift by 23 drops the rest), added to E's exponent bits. No conversion to integer.
-    const F shifter(0x1.8p23f), shifted = y + shifter;
+    // y <= 0; 2^y = 2^i E(y - i), i = round(y): y + 1.5 2^23 + 127 holds i + 127 in its low
+    // bits, whose shift by 23 (dropping the rest) is the float 2^i. No conversion to integer;
+    // a product, not an addition to E's exponent bits, which would turn a NaN's payload into
+    // a number.
+    const F shifter(0x1.8p23f + 127), shifted = y + shifter;
     const F power = horner<kExpDegree>(y - (shifted - shifter), exp_);
-    const I exponent = xsimd::bitwise_cast<I>(shifted) << 23;
-    const F value = xsimd::bitwise_cast<F>(xsimd::bitwise_cast<I>(power) + exponent);
+    const F value = power * xsimd::bitwise_cast<F>(xsimd::bitwise_cast<I>(shifted) << 23);
     if constexpr (kDecomposed)  // the exponent's bits lost NaN
       return zero_where(t <= t_zero_, xsimd::select(xsimd::isnan(t), t, value));
     return zero_where(t <= t_zero_, value);
@@ -353,8 +354,8 @@ class PreparedPerLanePowerPoly {
     const F x = xsimd::max(F(kernel_.t_floor), xsimd::min(one, t)) - one;  // exact
     const F y = n_clamped * (x * detail::horner_to(x, log_, kernel_.log_degree));
     // 2^y = 2^i E(y - i), i = round(y), as PreparedPowerPoly; y <= y_zero is cut below, where
-    // the exponent's bits could wrap.
-    const F shifter(0x1.8p23f), shifted = y + shifter, f = y - (shifted - shifter);
+    // 2^i could wrap.
+    const F shifter(0x1.8p23f + 127), shifted = y + shifter, f = y - (shifted - shifter);
     F power = exp_[std::size_t(kExpDegree)];
     for (int i = kExpDegree; i-- > 0;) power = mul_add(power, f, exp_[std::size_t(i)]);
     using Scale = PerLanePowerPolyKernel::Scale;
@@ -368,8 +369,7 @@ class PreparedPerLanePowerPoly {
       power *= mul_add(reciprocal, F(float(1 / kPi)),
                        mul_add(n_clamped, F(float(1 / (8 * kPi))), F(float(6 / (8 * kPi)))));
     }
-    const I exponent = xsimd::bitwise_cast<I>(shifted) << 23;
-    const F value = xsimd::bitwise_cast<F>(xsimd::bitwise_cast<I>(power) + exponent);
+    const F value = power * xsimd::bitwise_cast<F>(xsimd::bitwise_cast<I>(shifted) << 23);
     return zero_where(y <= F(kernel_.y_zero), value);  // NaN y: false, NaN kept
   }
 
