@@ -44,7 +44,11 @@ std::vector<Real> fit(const std::function<Real(Real)>& g, Real lo, Real hi,
 // The largest float at or below the t where t^n = bound / 2: below it, 0 is within the bound.
 float t_zero_of(double n, double bound) {
   const double t_zero = std::exp(std::log(bound / 2) / n);
-  return float(t_zero) > t_zero ? std::nextafter(float(t_zero), 0.0f) : float(t_zero);
+  const float rounded =
+      float(t_zero) > t_zero ? std::nextafter(float(t_zero), 0.0f) : float(t_zero);
+  // At most the float below 1: past n ~ 10^17 t_zero rounds to 1 in double, which would cut
+  // t = 1 itself and leave the log no domain (NaN coefficients).
+  return std::min(rounded, std::nextafter(1.0f, 0.0f));
 }
 
 // 2^f = 1 + f r(f) on [-1/2, 1/2], r's monomials: off by e, 2^f moves the output 2^round(y) e,
