@@ -195,8 +195,8 @@ struct PerLaneKernel {
   static constexpr int kPreciseBaseDegree = 4, kFastBaseDegree = 3;
   Coefficients h{}, coef_k{}, g{}, r{}, coef_n{};
 
-  // The scalar path's constants, converted to double once by the setup (in_double()): per call,
-  // converting each float cost more than the arithmetic on it.
+  // The scalar path's constants in double, filled once by the setup (convert_for_scalar()):
+  // converting each float per call cost more than the arithmetic on it.
   struct InDouble {
     using Coefficients = std::array<double, kMaxDegree + 1>;
     double w_limit = 0, v_cut = 0, y_center = 0, c_squared_slope = 0, coef_n_slope = 0;
@@ -247,8 +247,8 @@ struct PerLaneKernel {
   }
 
  private:
-  // R by Estrin's scheme at the variants' degrees: on the chain of dependent operations that
-  // sets the scalar path's speed, R's Horner steps were the longest part.
+  // R by Estrin's scheme at the variants' degrees: a shorter chain of dependent operations
+  // than Horner's rule, and that chain sets the scalar path's speed.
   [[gnu::always_inline]] double base_polynomial(double v) const {
     static_assert(kFastBaseDegree == 3 && kPreciseBaseDegree == 4);
     const InDouble::Coefficients& c = scalar.r;
