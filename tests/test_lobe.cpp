@@ -38,8 +38,8 @@ namespace kutlog {
 namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-// A NaN whose payload's low bits are set (the fuzzer's): an addition to exponent bits turned
-// it into a number.
+// A NaN whose payload's low bits are set: a kernel that adds to its bits as an integer (an
+// exponent) can turn it into a number.
 const float kNaNWithPayload = std::bit_cast<float>(0xfff278d6u);
 
 class LobePerArch : public testing::TestWithParam<Arch> {
@@ -104,7 +104,7 @@ TEST_P(LobePerArch, PowerPolyWithinItsBoundWithTheDataRule) {
   for (Variant variant : tools::kLobeVariants) {
     const double bound = variant == Variant::precise ? 0x1p-22 : 0x1p-16;
     double largest = 0;
-    // 1e20: t_zero, rounded to 1 in double, is the float below 1 (the fuzzer's NaN).
+    // 1e20: t_zero rounds to 1 in double; the float below 1 must keep t = 1 uncut.
     for (double n : {1.0, 2.0, 10.0, 44.5, 100.0, 1000.0, 1e4, 1e6, 1e20})
       for (double scale : {1.0, ref::blinn_phong_exact_coef(n)}) {
         const PowerPoly power(n, variant, scale);
