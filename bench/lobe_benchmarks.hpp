@@ -16,6 +16,8 @@
 #include <string_view>
 
 #include "inputs.hpp"
+#include "kutlog/baselines.hpp"
+#include "kutlog/inspect.hpp"
 #include "kutlog/lobe.hpp"
 #include "kutlog/reference.hpp"
 #include "kutlog/dispatch.hpp"
@@ -62,7 +64,7 @@ inline std::vector<float> fragment_inputs(const Lobe& lobe, std::size_t count,
 template <class Function>
 void run_array(benchmark::State& state, Arch arch, const std::vector<float>& x,
                const std::vector<float>& y, const Function& function) {
-  const ScopedArch forced(arch);
+  const inspect::ScopedArch forced(arch);
   BenchArrays arrays(x, y);
   for (auto _ : state) {
     function(arrays.x(), arrays.y(), arrays.out());

@@ -22,6 +22,7 @@
 #include "inputs.hpp"
 #include "kutlog/dispatch.hpp"
 #include "lobe_benchmarks.hpp"
+#include "kutlog/inspect.hpp"
 #include "kutlog/sampling.hpp"
 #include "kutlog/simd/xsimd.hpp"
 
@@ -67,7 +68,7 @@ void register_sampling_benchmarks(Arch arch) {
     benchmark::RegisterBenchmark(
         ("sample/sample_kutlog" + at_n + "/k:" + std::to_string(k) + tail).c_str(),
         [=](benchmark::State& state) {
-          const ScopedArch forced(arch);
+          const inspect::ScopedArch forced(arch);
           const LobeSampler sampler(kSamplingExponent, k, kLobeAnchor, LobeUse::microfacet);
           run_sampler(state, [&](const float* u1, const float* u2, DirectionSamples out) {
             sampler.sample(u1, u2, out, kArrayLength);
@@ -76,7 +77,7 @@ void register_sampling_benchmarks(Arch arch) {
   benchmark::RegisterBenchmark(
       ("sample/sample_kutlog" + at_n + "/k:3/count:1" + tail).c_str(),
       [=](benchmark::State& state) {
-        const ScopedArch forced(arch);
+        const inspect::ScopedArch forced(arch);
         const LobeSampler sampler(kSamplingExponent, 3, kLobeAnchor, LobeUse::microfacet);
         run_sampler(state, [&](const float* u1, const float* u2, DirectionSamples out) {
           for (std::size_t i = 0; i < kArrayLength; ++i)

@@ -6,7 +6,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake python3
+  build-essential cmake python3 universal-ctags
   libxsimd-dev libgtest-dev libbenchmark-dev libopenimageio-dev libmpfr-dev libcli11-dev
   libfmt-dev nlohmann-json3-dev
   fonts-dejavu-core python3-matplotlib

@@ -215,10 +215,10 @@ const detail::KernelTable& detail::best_kernel_table() {
   return table_of(active_arch());  // throws: this CPU runs no compiled arch
 }
 
-const detail::LobeArrayKernels* detail::lobe_array_kernels_for(Arithmetic arithmetic) {
-  if (arithmetic == Arithmetic::scalar) return nullptr;
+const detail::LobeArrayKernels* detail::lobe_array_kernels_for(detail::Arithmetic arithmetic) {
+  if (arithmetic == detail::Arithmetic::scalar) return nullptr;
   for (Arch arch : kCompiledArchs)
-    if (arch_supported(arch) && table_of(arch).fused_fma == (arithmetic == Arithmetic::fused))
+    if (arch_supported(arch) && table_of(arch).fused_fma == (arithmetic == detail::Arithmetic::fused))
       return &table_of(arch);
   return nullptr;
 }

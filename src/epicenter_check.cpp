@@ -16,11 +16,11 @@ constexpr long kChunk = 4096;
 
 }  // namespace
 
-std::optional<double> measured_epicenter_ulp(const LobeKernel& kernel, Arithmetic arithmetic,
+std::optional<double> measured_epicenter_ulp(const detail::LobeKernel& kernel, detail::Arithmetic arithmetic,
                                              const QuotientFit& reference, double scale,
                                              double w_epicenter, double limit) {
   const LobeArrayKernels* kernels = lobe_array_kernels_for(arithmetic);
-  if (!kernels || kernel.form != LobeKernel::Form::polynomial) return std::nullopt;
+  if (!kernels || kernel.form != detail::LobeKernel::Form::polynomial) return std::nullopt;
   // Every float t of [1 - w_epicenter, 1], 1 first (t above 1 gives t = 1's output).
   const float t_lowest = float(1 - w_epicenter);
   const long count = long(std::bit_cast<std::uint32_t>(1.0f)) -

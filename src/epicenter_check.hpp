@@ -23,8 +23,8 @@ namespace kutlog::detail {
 // compensated form does, within a millisecond; unfused has no such form, and the double form
 // runs at a third of the float one's speed: its larger epicenters (n down to about 10) are run
 // in a few milliseconds.
-constexpr long max_checked_epicenter_floats(Arithmetic arithmetic) {
-  return arithmetic == Arithmetic::unfused ? 1L << 20 : 1L << 17;
+constexpr long max_checked_epicenter_floats(detail::Arithmetic arithmetic) {
+  return arithmetic == detail::Arithmetic::unfused ? 1L << 20 : 1L << 17;
 }
 
 // The largest error of a polynomial kernel for SIMD lanes of that arithmetic (fused or
@@ -34,14 +34,14 @@ constexpr long max_checked_epicenter_floats(Arithmetic arithmetic) {
 // float's. nullopt when this CPU has no arch of that arithmetic or the epicenter has more
 // than max_checked_epicenter_floats(arithmetic) floats. Once the worst passes `limit` it returns
 // it at once, and every 16th float runs first: most kernels that miss cost a sixteenth.
-std::optional<double> measured_epicenter_ulp(const LobeKernel& kernel, Arithmetic arithmetic,
+std::optional<double> measured_epicenter_ulp(const detail::LobeKernel& kernel, detail::Arithmetic arithmetic,
                                              const QuotientFit& reference, double scale,
                                              double w_epicenter, double limit);
 
 // The kernels of this CPU's best arch with (fused) or without (unfused) FMA
 // (src/dispatch.cpp), or nullptr if it has none; nullptr for the scalar path.
 struct LobeArrayKernels;
-const LobeArrayKernels* lobe_array_kernels_for(Arithmetic arithmetic);
+const LobeArrayKernels* lobe_array_kernels_for(detail::Arithmetic arithmetic);
 // The kernels of this CPU's best arch, whatever KUTLOG_ARCH or force_arch choose: the sweep's
 // reference runs there.
 struct KernelTable;

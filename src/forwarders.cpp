@@ -1,7 +1,9 @@
 // The public array functions: each forwards to the active arch's kernel table. Compiled with
 // the baseline flags only.
 #include "active_table.hpp"
+#include "kutlog/baselines.hpp"
 #include "kutlog/detail/math_functions.hpp"
+#include "kutlog/inspect.hpp"
 #include "kutlog/lobe.hpp"
 #include "kutlog/math.hpp"
 #include "kutlog/reference.hpp"
@@ -31,17 +33,17 @@ KUTLOG_BINARY_MATH_FUNCTIONS(KUTLOG_FORWARD_BINARY)
 }  // namespace math
 
 float Lobe::eval_by_kernel(float t, Variant variant, Normalization normalization) const noexcept {
-  return kernel(variant, normalization, Arithmetic::scalar).evaluate(t);
+  return kernels_[kernel_index(variant, normalization, detail::Arithmetic::scalar)].evaluate(t);
 }
 void Lobe::eval_out_of_line(const float* t, float* out, std::size_t count, Variant variant,
                             Normalization normalization) const noexcept {
   const detail::KernelTable& table = active_table();
-  const LobeKernel& chosen = kernel(variant, normalization, table.fused_fma);
+  const detail::LobeKernel& chosen = inspect::kernel(*this, variant, normalization, table.fused_fma);
   table.of(chosen)(chosen, t, out, count);
 }
 void PerLaneLobe::eval(const float* t, const float* n, float* out, std::size_t count,
                        Variant variant, Normalization normalization) const noexcept {
-  active_table().kutlog_per_lane(kernel(variant), normalization == Normalization::exact_coef, t,
+  active_table().kutlog_per_lane(kernels_[int(variant)], normalization == Normalization::exact_coef, t,
                                  n, out, count);
 }
 void PowerPoly::eval(const float* t, float* out, std::size_t count) const noexcept {
@@ -76,19 +78,19 @@ SampledDirection LobeSampler::sample(float u1, float u2) const noexcept {
 void shade(const Lobe& lobe, Vectors normal, Vectors to_light, Vectors to_viewer, float* out,
            std::size_t count, const std::uint8_t* mask, ShadeOptions options) {
   const detail::KernelTable& table = active_table();
-  table.shade_vectors(lobe.kernel(options.variant, options.normalization, table.fused_fma),
+  table.shade_vectors(inspect::kernel(lobe, options.variant, options.normalization, table.fused_fma),
                       options, normal, to_light, to_viewer, out, count, mask);
 }
 void shade(const Lobe& lobe, Vectors normal, Direction to_light, Direction to_viewer, float* out,
            std::size_t count, const std::uint8_t* mask, ShadeOptions options) {
   const detail::KernelTable& table = active_table();
-  table.shade_directions(lobe.kernel(options.variant, options.normalization, table.fused_fma),
+  table.shade_directions(inspect::kernel(lobe, options.variant, options.normalization, table.fused_fma),
                          options, normal, to_light, to_viewer, out, count, mask);
 }
 void shade(const Lobe& lobe, const float* t, const float* n_dot_l, float* out, std::size_t count,
            const std::uint8_t* mask, ShadeOptions options) {
   const detail::KernelTable& table = active_table();
-  table.shade_cosines(lobe.kernel(options.variant, options.normalization, table.fused_fma),
+  table.shade_cosines(inspect::kernel(lobe, options.variant, options.normalization, table.fused_fma),
                       options, t, n_dot_l, out, count, mask);
 }
 

@@ -127,7 +127,7 @@ struct Profiles {
 // `finer` and it missed by little) or, for a SIMD kernel (one whose bound met the absolute
 // promise and missed the epicenter's by at most twice), by running it on every float of the
 // epicenter (src/epicenter_check.hpp). If it does, its certified bound.
-std::optional<detail::CertifiedError> meets(const LobeKernel& kernel, Arithmetic arithmetic,
+std::optional<detail::CertifiedError> meets(const detail::LobeKernel& kernel, detail::Arithmetic arithmetic,
                                             const detail::QuotientFit& fit, double scale,
                                             const Profiles& profiles, bool finer,
                                             const Target& target, QuotientSeries* series_to_run) {
@@ -160,7 +160,7 @@ std::optional<detail::CertifiedError> meets(const LobeKernel& kernel, Arithmetic
 //   Zero: the output is within E scale of scale F, so it is >= 0 where F >= E. The cut moves
 //   up to the last float where F < E (1 + 2^-16) (the margin outweighs this computation's
 //   roundings), at most the promise: there 0 is within it, and the certificate grows to cover it.
-void drop_clamp_if_proven(LobeKernel& kernel, detail::CertifiedError& certified,
+void drop_clamp_if_proven(detail::LobeKernel& kernel, detail::CertifiedError& certified,
                           const detail::LobeShape& shape, const Target& target) {
   const double zero_limit = certified.abs_error * (1 + 0x1p-16);
   // scale_f + scale_lo is exact in double.
@@ -198,7 +198,7 @@ std::vector<float> center_candidates(double w_max) {
 
 // A kernel with the bound its setup certified.
 struct CertifiedKernel {
-  LobeKernel kernel;
+  detail::LobeKernel kernel;
   detail::CertifiedError certified;
 };
 
@@ -209,18 +209,18 @@ struct CertifiedKernel {
 // degree that meets the target, if one does, at any center: first in the plain form (one
 // multiply-add per degree), its bound certified or its epicenter run; else, with FMA, in the
 // compensated form, about ten operations more.
-std::optional<CertifiedKernel> fit_polynomial(LobeKernel kernel, QuotientSeries& series,
+std::optional<CertifiedKernel> fit_polynomial(detail::LobeKernel kernel, QuotientSeries& series,
                                          const detail::LobeShape& shape, double w_max,
                                          double scale, const Profiles& profiles,
-                                         const Target& target, Arithmetic arithmetic) {
-  kernel.form = LobeKernel::Form::polynomial;
+                                         const Target& target, detail::Arithmetic arithmetic) {
+  kernel.form = detail::LobeKernel::Form::polynomial;
   const float scale_lo = float(scale - double(kernel.scale_f));
   const std::vector<float> centers = center_candidates(w_max);
   // A pass on the support's pieces, then one on finer pieces for the kernels that missed by
   // little, before the compensated form.
   for (auto [compensated, finer] : {std::pair{false, false}, std::pair{false, true},
                                     std::pair{true, false}, std::pair{true, true}}) {
-    if (compensated && arithmetic != Arithmetic::fused) break;
+    if (compensated && arithmetic != detail::Arithmetic::fused) break;
     kernel.compensated = compensated;
     for (int degree = 1; degree <= 16 && series.converged(); ++degree) {
       // The approximation alone must leave room: w_max q's truncation error at least.
@@ -238,9 +238,9 @@ std::optional<CertifiedKernel> fit_polynomial(LobeKernel kernel, QuotientSeries&
         // smaller than the output, against scale_f's whole rounding error in a lower binade).
         // SIMD kernels of either may be run over the epicenter: the whole scale saves an add
         // per batch, worth a second run.
-        const bool split = arithmetic != Arithmetic::scalar && (compensated || scale_lo != 0);
+        const bool split = arithmetic != detail::Arithmetic::scalar && (compensated || scale_lo != 0);
         QuotientSeries* series_to_run =
-            !compensated && arithmetic != Arithmetic::scalar ? &series : nullptr;
+            !compensated && arithmetic != detail::Arithmetic::scalar ? &series : nullptr;
         kernel.scale_lo = 0;
         std::optional<detail::CertifiedError> certified;
         if (!compensated)
@@ -252,7 +252,7 @@ std::optional<CertifiedKernel> fit_polynomial(LobeKernel kernel, QuotientSeries&
               meets(kernel, arithmetic, fit, scale, profiles, finer, target, series_to_run);
         }
         if (certified) {
-          if (arithmetic != Arithmetic::scalar)
+          if (arithmetic != detail::Arithmetic::scalar)
             drop_clamp_if_proven(kernel, *certified, shape, target);
           return CertifiedKernel{kernel, *certified};
         }
@@ -266,11 +266,11 @@ std::optional<CertifiedKernel> fit_polynomial(LobeKernel kernel, QuotientSeries&
 
 // B^k, B = cos(c theta) = 1 - w q(w), which converges for every lobe: in double lanes, or on
 // the scalar path in double or, where kernel.scalar_in_float, in float.
-std::optional<CertifiedKernel> fit_base_power(LobeKernel kernel, QuotientSeries& series, double w_max,
+std::optional<CertifiedKernel> fit_base_power(detail::LobeKernel kernel, QuotientSeries& series, double w_max,
                                          double scale, const Profiles& profiles,
-                                         const Target& target, Arithmetic arithmetic) {
-  kernel.form = LobeKernel::Form::base_power;
-  for (int degree = 1; degree <= LobeKernel::kMaxDegree; ++degree) {
+                                         const Target& target, detail::Arithmetic arithmetic) {
+  kernel.form = detail::LobeKernel::Form::base_power;
+  for (int degree = 1; degree <= detail::LobeKernel::kMaxDegree; ++degree) {
     // A base off by e puts F off by about k e near t = 1: a fit far from the target is skipped.
     if (series.converged() && series.truncation_error(degree) * w_max > target.abs_error) continue;
     const std::optional<detail::QuotientFit> fit = series.fit(degree, 0);
@@ -303,8 +303,8 @@ CertifiedKernel fit_kernel(const ref::KutlogLobe& reference, float t_cut,
                       const detail::LobeShape& shape, QuotientSeries& polynomial_series,
                       const std::function<QuotientSeries&()>& base_series, double w_max,
                       double scale, const Profiles& profiles, const Target& target,
-                      Arithmetic arithmetic) {
-  LobeKernel kernel;
+                      detail::Arithmetic arithmetic) {
+  detail::LobeKernel kernel;
   kernel.t_cut = t_cut;
   kernel.scale_f = float(scale);
   kernel.scale_d = scale;
@@ -318,13 +318,13 @@ CertifiedKernel fit_kernel(const ref::KutlogLobe& reference, float t_cut,
   // runs as fast as the base, in float as in double (n = 1000, k = 5: degree 8 in double
   // takes a tenth longer than a base of degree 3).
   const int base_overhead = power_cost(kernel.k) + 1;
-  if (arithmetic == Arithmetic::scalar) {
+  if (arithmetic == detail::Arithmetic::scalar) {
     // In float where a form's bound allows, the cheaper form (a third faster than double).
-    LobeKernel in_float = kernel;
+    detail::LobeKernel in_float = kernel;
     in_float.scalar_in_float = true;
     std::optional<CertifiedKernel> polynomial = fit_polynomial(
         in_float, polynomial_series, shape, w_max, scale, profiles, target, arithmetic);
-    if (polynomial && polynomial->kernel.degree > LobeKernel::kMaxUnrolledDegree)
+    if (polynomial && polynomial->kernel.degree > detail::LobeKernel::kMaxUnrolledDegree)
       polynomial.reset();
     const std::optional<CertifiedKernel> base =
         fit_base_power(in_float, base_series(), w_max, scale, profiles, target, arithmetic);
@@ -335,7 +335,7 @@ CertifiedKernel fit_kernel(const ref::KutlogLobe& reference, float t_cut,
   const std::optional<CertifiedKernel> polynomial =
       fit_polynomial(kernel, polynomial_series, shape, w_max, scale, profiles, target, arithmetic);
   if (polynomial &&
-      (arithmetic != Arithmetic::scalar || polynomial->kernel.degree < 1 + base_overhead))
+      (arithmetic != detail::Arithmetic::scalar || polynomial->kernel.degree < 1 + base_overhead))
     return *polynomial;
   const std::optional<CertifiedKernel> base =
       fit_base_power(kernel, base_series(), w_max, scale, profiles, target, arithmetic);
@@ -397,14 +397,14 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
   detail::ScalarPiecesFitter pieces_fitter(shape, t_cut_);
   for (Variant variant : {Variant::precise, Variant::fast})
     for (Normalization normalization : {Normalization::none, Normalization::exact_coef})
-      for (Arithmetic arithmetic : {Arithmetic::unfused, Arithmetic::fused, Arithmetic::scalar}) {
+      for (detail::Arithmetic arithmetic : {detail::Arithmetic::unfused, detail::Arithmetic::fused, detail::Arithmetic::scalar}) {
         const Target& promised = variant == Variant::fast ? kFastTarget : kPreciseTarget;
         const double factor = detail::lobe_target_factor_for_tests.load(std::memory_order_relaxed);
         const Target target{promised.abs_error * factor, promised.epicenter_ulp * factor};
         const int index = kernel_index(variant, normalization, arithmetic);
         const double scale = normalization == Normalization::exact_coef ? coef_exact_ : 1.0;
         // The scalar path: the pieces if certified (the faster form), else a kernel.
-        if (arithmetic == Arithmetic::scalar) {
+        if (arithmetic == detail::Arithmetic::scalar) {
           const auto keep = [&](auto& pieces, auto fitted) {
             if (!fitted) return false;
             pieces = std::move(fitted->pieces);
@@ -414,9 +414,9 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
           };
           if (variant == Variant::fast
                   ? keep(fast_pieces_[int(normalization)],
-                         pieces_fitter.fit<FastScalarPieces>(scale, target))
+                         pieces_fitter.fit<detail::FastScalarPieces>(scale, target))
                   : keep(precise_pieces_[int(normalization)],
-                         pieces_fitter.fit<ScalarPieces>(scale, target)))
+                         pieces_fitter.fit<detail::ScalarPieces>(scale, target)))
             continue;
         }
         const CertifiedKernel fitted =

@@ -15,7 +15,7 @@ constexpr double kMonomialRelativeError = 0x1p-60;
 // Where the ulp bound applies: F >= 0.6 (kutlog/lobe.hpp).
 constexpr double kEpicenter = 0.6;
 
-using Coefficients = std::array<double, LobeKernel::kMaxDegree + 1>;
+using Coefficients = std::array<double, detail::LobeKernel::kMaxDegree + 1>;
 
 // The same bounds for Estrin's scheme as the scalar path runs it (LobeKernel::with_q): the
 // sum of c[first + i] x^i over i < count is the lowest bit_floor(count - 1) terms plus
@@ -24,7 +24,7 @@ struct Evaluated {
   Interval exact;  // where the exact value lies
   double error;    // of the computed value against it
 };
-using Powers = std::array<Evaluated, std::bit_width(unsigned(LobeKernel::kMaxDegree))>;
+using Powers = std::array<Evaluated, std::bit_width(unsigned(detail::LobeKernel::kMaxDegree))>;
 Evaluated estrin_node(const Coefficients& c, int first, int count, const Powers& powers,
                       Rounding round, bool product_rounded) {
   if (count == 1) return {{c[first], c[first]}, 0};
@@ -92,16 +92,16 @@ LobeProfile lobe_profile(const LobeShape& shape, double w_max, int pieces) {
   return profile;
 }
 
-CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
+CertifiedError certified_error(const detail::LobeKernel& kernel, detail::Arithmetic arithmetic,
                                const QuotientFit& fit, double scale, const LobeProfile& profile,
                                const CertifiedError& limit) {
-  const bool polynomial = kernel.form == LobeKernel::Form::polynomial;
+  const bool polynomial = kernel.form == detail::LobeKernel::Form::polynomial;
   // In float: the polynomial form in SIMD lanes, or either form in the scalar path where the
   // kernel says so (SIMD lanes run the base_power form in double).
-  const bool in_float = arithmetic == Arithmetic::scalar ? kernel.scalar_in_float : polynomial;
+  const bool in_float = arithmetic == detail::Arithmetic::scalar ? kernel.scalar_in_float : polynomial;
   // The scalar path's multiply-adds are fused or not as the caller's flags decide: the
   // unfused bound covers both.
-  const bool product_rounded = arithmetic != Arithmetic::fused || !in_float;
+  const bool product_rounded = arithmetic != detail::Arithmetic::fused || !in_float;
   const double unit = in_float ? kFloatUnit : kDoubleUnit;
   const Rounding round{in_float};
   const int degree = kernel.degree;
@@ -121,7 +121,7 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
                                        2 * (1 - profile.w.back()) >= double(kernel.center_t));
   const bool split_scale = in_float && kernel.scale_lo != 0;
   const bool compensated = in_float && kernel.compensated;
-  if (compensated && (arithmetic != Arithmetic::fused || degree == 0)) return {INFINITY, INFINITY};
+  if (compensated && (arithmetic != detail::Arithmetic::fused || degree == 0)) return {INFINITY, INFINITY};
   Coefficients above_constant{};  // r's: c_1 .. c_degree
   for (int i = 1; i <= degree; ++i) above_constant[i - 1] = stored[i];
   const double stored_scale =
@@ -143,7 +143,7 @@ CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
     const HornerBound horner =
         compensated ? horner_bound(std::span(above_constant).first(std::size_t(degree)), x,
                                    round, false)
-        : arithmetic == Arithmetic::scalar
+        : arithmetic == detail::Arithmetic::scalar
             ? estrin_bound(stored, degree, x, round, product_rounded)
             : horner_bound(std::span(stored).first(std::size_t(degree) + 1), x, round,
                            product_rounded);

@@ -110,7 +110,7 @@ struct CertifiedError {
 // kernel: a kernel of either form, its coefficients set from fit.monomials (times scale in
 // the polynomial form); scale: the exact scale (coef or 1) that kernel.scale_f rounds.
 // Stops at the first piece past `limit` (then only that the error exceeds it is known).
-CertifiedError certified_error(const LobeKernel& kernel, Arithmetic arithmetic,
+CertifiedError certified_error(const detail::LobeKernel& kernel, detail::Arithmetic arithmetic,
                                const QuotientFit& fit, double scale, const LobeProfile& profile,
                                const CertifiedError& limit = {INFINITY, INFINITY});
 

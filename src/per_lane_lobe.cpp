@@ -20,7 +20,7 @@ namespace {
 using detail::FloatFit;
 using detail::Real;
 using detail::fit_float;
-static_assert(FloatFit::kMaxDegree == PerLaneKernel::kMaxDegree);
+static_assert(FloatFit::kMaxDegree == detail::PerLaneKernel::kMaxDegree);
 
 // Each polynomial's relative error, by variant: a quarter or less of the bound (2^-20, 2^-16)
 // each, leaving the fast variant's power in float its k roundings (k <= 64: 2^-18 at most).
@@ -55,17 +55,17 @@ FloatFit fit_base(double target, int degree) {
   return *r;
 }
 const FloatFit& base_fit(Variant variant) {
-  static const FloatFit precise = fit_base(kPreciseTarget, PerLaneKernel::kPreciseBaseDegree),
-                        fast = fit_base(kFastTarget, PerLaneKernel::kFastBaseDegree);
+  static const FloatFit precise = fit_base(kPreciseTarget, detail::PerLaneKernel::kPreciseBaseDegree),
+                        fast = fit_base(kFastTarget, detail::PerLaneKernel::kFastBaseDegree);
   return variant == Variant::fast ? fast : precise;
 }
 
 // One variant's kernel: every polynomial fitted to the variant's target, so the fast one takes
 // the lowest degrees (at n in [500, 2000], coef = slope n + a constant) and its peak its own
 // bound (kPerLaneFastPeakError).
-PerLaneKernel fit_kernel(double n_min, double n_max, int k, double Q, Variant variant) {
+detail::PerLaneKernel fit_kernel(double n_min, double n_max, int k, double Q, Variant variant) {
   const double target = variant == Variant::fast ? kFastTarget : kPreciseTarget;
-  PerLaneKernel kernel;
+  detail::PerLaneKernel kernel;
   kernel.k = k;
   kernel.n_min = float(n_min);
   kernel.n_max = float(n_max);
@@ -166,7 +166,7 @@ PerLaneKernel fit_kernel(double n_min, double n_max, int k, double Q, Variant va
   // At k = 1 there is no power: the base in float, one fused multiply-add, is rounded once
   // as in double (FMA archs; SSE4.1 adds its product's rounding, within the bound). Up to
   // kCompensatedMaxK the power's own roundings, about k, stay within the epicenter bound.
-  using Power = PerLaneKernel::Power;
+  using Power = detail::PerLaneKernel::Power;
   kernel.power = variant == Variant::fast || k == 1 ? Power::in_float
                  : k <= kCompensatedMaxK           ? Power::compensated
                                                    : Power::in_double;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "kutlog/baselines.hpp"
 #include "kutlog/lobe.hpp"
 #include "kutlog/reference.hpp"
 #include "cpu_features.hpp"
@@ -88,9 +89,9 @@ PowerPoly::PowerPoly(double n, Variant variant, double scale) {
         const Real y = x * n_log2_over_x(x);  // <= 0 but where decomposed: 2^y at most 1
         return std::exp2(std::min(y, Real(0))) * ln2 * std::fabs(x * (p - n_log2_over_x(x)));
       },
-      bound / 4, PowerPolyKernel::kMaxLogDegree);
-  kernel_.exp_degree = variant == Variant::precise ? PowerPolyKernel::kPreciseExpDegree
-                                                   : PowerPolyKernel::kFastExpDegree;
+      bound / 4, detail::PowerPolyKernel::kMaxLogDegree);
+  kernel_.exp_degree = variant == Variant::precise ? detail::PowerPolyKernel::kPreciseExpDegree
+                                                   : detail::PowerPolyKernel::kFastExpDegree;
   const std::vector<Real> exp = fit_exp2(bound / 2, kernel_.exp_degree);
   if (log.empty() || exp.empty())
     throw std::logic_error("kutlog: PowerPoly(n = " + std::to_string(n) +
@@ -119,7 +120,7 @@ PerLanePowerPoly::PerLanePowerPoly(double n_min, double n_max, Variant variant,
     throw std::invalid_argument("kutlog: n_max = " + std::to_string(n_max) +
                                 " is invalid; n_max must be in [n_min, FLT_MAX]");
   detail::require_runnable_arch();
-  PerLanePowerPolyKernel& k = kernel_;
+  detail::PerLanePowerPolyKernel& k = kernel_;
   k.n_min = float(n_min);
   k.n_max = float(n_max);
   k.t_floor = t_zero_of(n_min, bound / 2);
@@ -140,9 +141,9 @@ PerLanePowerPoly::PerLanePowerPoly(double n_min, double n_max, Variant variant,
           worst = std::max(worst, std::exp2(-n * slope) * ln2 * n * error);
         return worst;
       },
-      bound / 4, PerLanePowerPolyKernel::kMaxDegree);
-  k.exp_degree = variant == Variant::precise ? PerLanePowerPolyKernel::kPreciseExpDegree
-                                             : PerLanePowerPolyKernel::kFastExpDegree;
+      bound / 4, detail::PerLanePowerPolyKernel::kMaxDegree);
+  k.exp_degree = variant == Variant::precise ? detail::PerLanePowerPolyKernel::kPreciseExpDegree
+                                             : detail::PerLanePowerPolyKernel::kFastExpDegree;
   const std::vector<Real> exp = fit_exp2(bound / 2, k.exp_degree);
   if (log.empty() || exp.empty())
     throw std::logic_error("kutlog: PerLanePowerPoly: no polynomial meets the bound");
@@ -150,7 +151,7 @@ PerLanePowerPoly::PerLanePowerPoly(double n_min, double n_max, Variant variant,
   for (std::size_t i = 0; i < log.size(); ++i) k.log[i] = float(log[i]);
   k.exp[0] = 1;
   for (std::size_t i = 0; i < exp.size(); ++i) k.exp[i + 1] = float(exp[i]);
-  using Scale = PerLanePowerPolyKernel::Scale;
+  using Scale = detail::PerLanePowerPolyKernel::Scale;
   if (normalization == Normalization::exact_coef) {
     // scale(n) = slope n + S(n), as PerLaneLobe's coef, within half the bound, where S's
     // degree is at most 3; else the closed form and its reciprocal, five operations.

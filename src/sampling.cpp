@@ -9,13 +9,14 @@
 #include <vector>
 
 #include "cpu_features.hpp"
+#include "kutlog/sampling_reference.hpp"
 #include "polynomial_fit.hpp"
 
 namespace kutlog {
 namespace {
 
 using detail::Real;
-using K = SamplerKernel;
+using K = detail::SamplerKernel;
 
 // The fit's own error, in units of G, before the float evaluation adds its roundings (a few
 // 2^-24 of theta): small enough not to count against them.
@@ -30,12 +31,12 @@ struct Cell {
   double argument(double x) const { return origin + (0.5 + x) * width; }
 };
 
-std::vector<Cell> cells_of(SamplerCells layout) {
+std::vector<Cell> cells_of(detail::SamplerCells layout) {
   std::vector<Cell> result;
   const double lower_width = 0.5 / layout.lower_cells;
   for (int i = 0; i < layout.lower_cells; ++i)
     result.push_back({i, true, i * lower_width, lower_width});
-  for (int exponent = layout.top_exponent; exponent >= SamplerCells::kLowestExponent; --exponent)
+  for (int exponent = layout.top_exponent; exponent >= detail::SamplerCells::kLowestExponent; --exponent)
     for (int band = 0; band < layout.bands(); ++band) {
       const double binade = std::ldexp(1.0, exponent), width = binade / layout.bands();
       result.push_back({layout.upper_cell(exponent, band), false, binade + band * width, width});
@@ -81,7 +82,7 @@ struct Fit {
   std::vector<std::vector<Real>> series;  // each cell's Chebyshev series in 2x, by cell index
 
   // theta by the full series (in long double) of the cell of `layout` holding the argument.
-  double theta(SamplerCells layout, bool lower, double argument) const {
+  double theta(detail::SamplerCells layout, bool lower, double argument) const {
     const auto [cell, position] = layout.position(lower, argument);
     const Real x = position;
     const std::vector<Real>& a = series[cell];
@@ -102,7 +103,7 @@ double stored_polynomial(Storage storage, int cell, int degree, double x) {
 }
 
 // The stored polynomial of the cell holding the argument, times its weight.
-double stored_value(SamplerCells layout, Weight weight, int degree, Storage storage, bool lower,
+double stored_value(detail::SamplerCells layout, Weight weight, int degree, Storage storage, bool lower,
                     double argument) {
   const auto [cell, x] = layout.position(lower, argument);
   return weight_at(weight, lower, argument) * stored_polynomial(storage, cell, degree, x);
@@ -112,7 +113,7 @@ double stored_value(SamplerCells layout, Weight weight, int degree, Storage stor
 // dropped Chebyshev coefficients sum below the tolerance times scale in every cell; stores the
 // monomial coefficients as floats (zero above that degree, up to max_degree); then checks the
 // fit as stored, in double.
-Fit fit_cells(const ValueAt& value_at, double scale, Weight weight, SamplerCells layout,
+Fit fit_cells(const ValueAt& value_at, double scale, Weight weight, detail::SamplerCells layout,
               int max_degree, Storage storage) {
   const auto value_of = [&](const Cell& cell, double x) {
     return value_at(cell.lower, cell.argument(x));

@@ -218,9 +218,9 @@ std::optional<ScalarPiecesFitter::Fitted<Pieces>> ScalarPiecesFitter::fit(
   return std::nullopt;
 }
 
-template std::optional<ScalarPiecesFitter::Fitted<ScalarPieces>>
-ScalarPiecesFitter::fit<ScalarPieces>(double, const CertifiedError&);
-template std::optional<ScalarPiecesFitter::Fitted<FastScalarPieces>>
-ScalarPiecesFitter::fit<FastScalarPieces>(double, const CertifiedError&);
+template std::optional<ScalarPiecesFitter::Fitted<detail::ScalarPieces>>
+ScalarPiecesFitter::fit<detail::ScalarPieces>(double, const CertifiedError&);
+template std::optional<ScalarPiecesFitter::Fitted<detail::FastScalarPieces>>
+ScalarPiecesFitter::fit<detail::FastScalarPieces>(double, const CertifiedError&);
 
 }  // namespace kutlog::detail

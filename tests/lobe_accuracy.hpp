@@ -17,6 +17,7 @@
 #include "common/names.hpp"
 #include "common/ulp.hpp"
 #include "kutlog/accuracy.hpp"
+#include "kutlog/inspect.hpp"
 #include "kutlog/lobe.hpp"
 #include "kutlog/reference.hpp"
 #include "lobe_case.hpp"
@@ -63,9 +64,9 @@ struct LargestErrors {
 
 // The arithmetic whose kernels `evaluate` runs: the active arch's for the array functions, else
 // the scalar path's.
-inline Arithmetic arithmetic_of(tools::LobeEvaluator evaluate) {
-  if (evaluate != tools::evaluate_array) return Arithmetic::scalar;
-  return detail::active_lobe_loops.load()->fused_fma ? Arithmetic::fused : Arithmetic::unfused;
+inline inspect::Arithmetic arithmetic_of(tools::LobeEvaluator evaluate) {
+  if (evaluate != tools::evaluate_array) return inspect::Arithmetic::scalar;
+  return detail::active_lobe_loops.load()->fused_fma ? inspect::Arithmetic::fused : inspect::Arithmetic::unfused;
 }
 
 // Asserts kutlog/accuracy.hpp's bounds of the value returned and the hard contracts
@@ -77,7 +78,7 @@ inline Arithmetic arithmetic_of(tools::LobeEvaluator evaluate) {
 inline void expect_within_bounds(const Lobe& lobe, const std::array<tools::LobeErrors, 4>& errors,
                                  LargestErrors* largest = nullptr,
                                  tools::LobeEvaluator evaluate = tools::evaluate_array) {
-  const Arithmetic arithmetic = arithmetic_of(evaluate);
+  const inspect::Arithmetic arithmetic = arithmetic_of(evaluate);
   const char* names[] = {"precise", "precise*coef", "fast", "fast*coef"};
   for (int i = 0; i < 4; ++i) {
     const LobeBound& bound = kLobeBounds[i < 2 ? 0 : 1];
@@ -88,8 +89,8 @@ inline void expect_within_bounds(const Lobe& lobe, const std::array<tools::LobeE
     EXPECT_LE(errors[i].max_abs_error, bound.max_abs_error())
         << "worst t = " << errors[i].worst_abs_input;
     // Certified (the double reference's own error, about 1e-16, allowed for).
-    const KernelCertificate& certified =
-        lobe.certificate(tools::kLobeVariants[i / 2], tools::kLobeNormalizations[i % 2], arithmetic);
+    const inspect::KernelCertificate& certified =
+        inspect::certificate(lobe, tools::kLobeVariants[i / 2], tools::kLobeNormalizations[i % 2], arithmetic);
     // Kept only within the promise: a bound that missed it, even by little, never is.
     EXPECT_LE(certified.abs_error, bound.promised_abs_error) << "arithmetic " << int(arithmetic);
     EXPECT_LE(errors[i].max_abs_error, certified.abs_error * (1 + 1e-9))

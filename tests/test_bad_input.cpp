@@ -11,7 +11,9 @@
 
 #include "common/guarded_output.hpp"
 #include "expect_invalid.hpp"
+#include "kutlog/baselines.hpp"
 #include "kutlog/dispatch.hpp"
+#include "kutlog/inspect.hpp"
 #include "kutlog/lobe.hpp"
 #include "kutlog/math.hpp"
 #include "kutlog/reference.hpp"
@@ -52,7 +54,6 @@ static_assert(noexcept(some_lobe().eval(0.5f, Variant::fast, Normalization::exac
 static_assert(noexcept(some_lobe().eval(some_floats(), some_floats(), 1)));
 static_assert(noexcept(some_lobe().eval(some_floats(), some_floats(), 1, Variant::fast,
                                         Normalization::exact_coef)));
-static_assert(noexcept(some_lobe().kernel(Variant::precise, Normalization::exact_coef, true)));
 static_assert(noexcept(some_per_lane_lobe().eval(0.5f, 10.0f)));
 static_assert(noexcept(some_per_lane_lobe().eval(some_floats(), some_floats(), some_floats(), 1)));
 static_assert(noexcept(some_power_poly().eval(some_floats(), some_floats(), 1)));
@@ -93,7 +94,7 @@ TEST(BadParameters, UnknownArchNamesAreRejected) {
 
 class BadData : public testing::TestWithParam<Arch> {
  protected:
-  ScopedArch forced{GetParam()};
+  inspect::ScopedArch forced{GetParam()};
 };
 
 // count = 0 touches nothing: null pointers are fine (no throw, no crash), and valid pointers

@@ -18,7 +18,9 @@
 
 #include "common/ulp.hpp"
 #include "kutlog/accuracy.hpp"
+#include "kutlog/baselines.hpp"
 #include "kutlog/dispatch.hpp"
+#include "kutlog/inspect.hpp"
 #include "kutlog/lobe.hpp"
 #include "kutlog/sampling.hpp"
 #include "kutlog/math.hpp"
@@ -70,7 +72,7 @@ TEST(Dispatch, ForcingEachSupportedArchWorks) {
   const std::vector<float> x = sample_inputs();
   std::vector<float> out(x.size());
   for (Arch arch : supported_archs()) {
-    ScopedArch forced(arch);
+    inspect::ScopedArch forced(arch);
     EXPECT_EQ(active_arch(), arch);
     math::cos_u10(x.data(), out.data(), x.size());
     expect_cos_within_bound(x, out);
@@ -112,7 +114,7 @@ void expect_fallback_reporting(const std::string& words) {
         << arch_environment_error();
     math::cos_u10(x.data(), out.data(), x.size());
     {
-      ScopedArch best(supported_archs().front());
+      inspect::ScopedArch best(supported_archs().front());
       math::cos_u10(x.data(), expected.data(), x.size());
     }
     EXPECT_EQ(out, expected);

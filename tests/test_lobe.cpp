@@ -21,7 +21,9 @@
 #include "common/names.hpp"
 #include "common/ulp.hpp"
 #include "kutlog/accuracy.hpp"
+#include "kutlog/baselines.hpp"
 #include "kutlog/dispatch.hpp"
+#include "kutlog/inspect.hpp"
 #include "kutlog/lobe.hpp"
 #include "kutlog/reference.hpp"
 #include "expect_invalid.hpp"
@@ -44,7 +46,7 @@ const float kNaNWithPayload = std::bit_cast<float>(0xfff278d6u);
 
 class LobePerArch : public testing::TestWithParam<Arch> {
  protected:
-  ScopedArch forced{GetParam()};
+  inspect::ScopedArch forced{GetParam()};
 };
 
 TEST_P(LobePerArch, AccuracyGridEvery97thFloat) { expect_grid_within_bounds(97); }
@@ -254,15 +256,15 @@ TEST_P(LobePerArch, ShortSpansEqualTheLongArrayForEveryKernel) {
   const Loops& loops = *detail::active_lobe_loops.load();
   std::vector<LobeCase> candidates = accuracy_grid();
   for (const LobeCase& c : random_lobes(400, 2031)) candidates.push_back(c);
-  std::map<int, LobeKernel> kernel_of_slot;
+  std::map<int, inspect::LobeKernel> kernel_of_slot;
   for (const LobeCase& c : candidates) {
     const Lobe lobe(c.n, c.k, c.Q);
     for (Variant variant : tools::kLobeVariants)
       for (Normalization normalization : tools::kLobeNormalizations) {
-        const LobeKernel& kernel = lobe.kernel(variant, normalization, loops.fused_fma);
+        const inspect::LobeKernel& kernel = inspect::kernel(lobe, variant, normalization, loops.fused_fma);
         kernel_of_slot.emplace(Loops::slot_of(kernel), kernel);
         if (!kernel.clamped && kernel.scale_lo != 0) {  // split: its clamp put back
-          LobeKernel clamped = kernel;
+          inspect::LobeKernel clamped = kernel;
           clamped.clamped = true;
           kernel_of_slot.emplace(Loops::slot_of(clamped), clamped);
         }
@@ -362,13 +364,14 @@ TEST_P(LobePerArch, PerLaneWithOneExponent) {
 TEST_P(LobePerArch, PerLaneZeroFarPastTheCut) {
   const PerLaneCase increasing{3, 0.5, 500, 2000}, turning{30, 0.958376, 31.5718, 76.8568};
   for (Variant variant : {Variant::precise, Variant::fast}) {
-    EXPECT_FALSE(PerLaneLobe(increasing.n_min, increasing.n_max, increasing.k, increasing.Q)
-                     .kernel(variant)
+    EXPECT_FALSE(inspect::kernel(
+                     PerLaneLobe(increasing.n_min, increasing.n_max, increasing.k, increasing.Q),
+                     variant)
                      .w_clamped);
   }
-  EXPECT_TRUE(PerLaneLobe(turning.n_min, turning.n_max, turning.k, turning.Q)
-                  .kernel(Variant::fast)
-                  .w_clamped);
+  EXPECT_TRUE(
+      inspect::kernel(PerLaneLobe(turning.n_min, turning.n_max, turning.k, turning.Q), Variant::fast)
+          .w_clamped);
   for (const PerLaneCase& c : {increasing, turning, PerLaneCase{1, 0.5, 1, 1e6}}) {
     const PerLaneLobe lobe(c.n_min, c.n_max, c.k, c.Q);
     std::vector<float> t, n;
@@ -473,7 +476,7 @@ INSTANTIATE_TEST_SUITE_P(Arch, LobePerArch, testing::ValuesIn(supported_archs())
 // Every float of each support, sampled below the cut (labelled `exhaustive`).
 class LobeExhaustive : public testing::TestWithParam<Arch> {
  protected:
-  ScopedArch forced{GetParam()};
+  inspect::ScopedArch forced{GetParam()};
 };
 // Under emulation (KUTLOG_SWEEP_SAMPLES, tests/sweep_samples.hpp) each is sampled instead.
 TEST_P(LobeExhaustive, AccuracyGridEveryFloat) { expect_grid_within_bounds_everywhere(); }
@@ -531,7 +534,7 @@ struct LobeSetup {
 };
 LobeSetup lobe_setup(const Lobe& lobe, float center_t) {
   const double w_max = 2 * std::pow(std::sin(0.5 * std::min(lobe.cutoff_angle(), M_PI / 2)), 2);
-  const detail::LobeShape shape{lobe.c(), lobe.k()};
+  const detail::LobeShape shape{inspect::c(lobe), lobe.k()};
   const auto q = [&](detail::Real w) {  // at w = 0, its limit
     w = std::max(w, detail::Real(0x1p-60) * w_max);
     return detail::Real(shape.one_minus_power(double(w), lobe.k())) / w;
@@ -555,13 +558,13 @@ TEST(LobeClamp, LowestComputedQIsBoundedAndBenchmarkLobesRunUnclamped) {
     int checked = 0;  // float polynomial kernels, not compensated: what the test is about
     for (Variant variant : tools::kLobeVariants)
       for (Normalization normalization : tools::kLobeNormalizations)
-        for (Arithmetic arithmetic : {Arithmetic::unfused, Arithmetic::fused}) {
-          const LobeKernel& kernel = lobe.kernel(variant, normalization, arithmetic);
+        for (inspect::Arithmetic arithmetic : {inspect::Arithmetic::unfused, inspect::Arithmetic::fused}) {
+          const inspect::LobeKernel& kernel = inspect::kernel(lobe, variant, normalization, arithmetic);
           const std::string name = testing::PrintToString(c) + " variant " +
                                    std::to_string(int(variant)) + " normalization " +
                                    std::to_string(int(normalization)) + " arithmetic " +
                                    std::to_string(int(arithmetic));
-          if (kernel.form != LobeKernel::Form::polynomial || kernel.compensated) continue;
+          if (kernel.form != inspect::LobeKernel::Form::polynomial || kernel.compensated) continue;
           ++checked;
           // (lowest_q depends on the kernel's coefficients, not on how exact the reference is)
           const LobeSetup setup = lobe_setup(lobe, kernel.center_t);
@@ -572,7 +575,7 @@ TEST(LobeClamp, LowestComputedQIsBoundedAndBenchmarkLobesRunUnclamped) {
             const float s = kernel.center_t - std::min(1.0f, t);
             float q = kernel.q_f[kernel.degree];
             for (int i = kernel.degree; i-- > 0;) {
-              if (arithmetic == Arithmetic::fused) {
+              if (arithmetic == inspect::Arithmetic::fused) {
                 q = std::fma(q, s, kernel.q_f[i]);
               } else {
                 const float product = float(double(q) * double(s));  // exact, then rounded
@@ -605,12 +608,12 @@ TEST(LobeClamp, LowestComputedQIsBoundedAndBenchmarkLobesRunUnclamped) {
 // counted apart), and see a kernel that misses. Planted (2026-12-04): the check returning 0
 // fails both; the unfused kernels run on the FMA arch fails `unfused` (the kernel it accepts
 // errs 2.04 and 2.21 ulps on SSE4.1); the unfused check limited to 2^17 floats fails it too.
-class EpicenterCheck : public testing::TestWithParam<Arithmetic> {
+class EpicenterCheck : public testing::TestWithParam<inspect::Arithmetic> {
  protected:
   // The best supported arch whose array kernels are of that arithmetic.
-  static std::optional<Arch> arch_of(Arithmetic arithmetic) {
+  static std::optional<Arch> arch_of(inspect::Arithmetic arithmetic) {
     for (Arch arch : supported_archs()) {
-      const ScopedArch forced(arch);
+      const inspect::ScopedArch forced(arch);
       float t = 1, out = 0;
       Lobe(10, 1, 0.5).eval(&t, &out, 1);  // the active loops, for arithmetic_of
       if (arithmetic_of(tools::evaluate_array) == arithmetic) return arch;
@@ -620,7 +623,7 @@ class EpicenterCheck : public testing::TestWithParam<Arithmetic> {
 };
 
 TEST_P(EpicenterCheck, MeasuresWhatAnIndependentSweepMeasures) {
-  const Arithmetic arithmetic = GetParam();
+  const inspect::Arithmetic arithmetic = GetParam();
   const std::optional<Arch> arch = arch_of(arithmetic);
   if (!arch) GTEST_SKIP() << "no arch of that arithmetic on this CPU";
   int checked = 0;
@@ -629,18 +632,18 @@ TEST_P(EpicenterCheck, MeasuresWhatAnIndependentSweepMeasures) {
                             LobeCase{4000, 2, 0.3}, LobeCase{10, 5, 0.5}}) {
     const Lobe lobe(c.n, c.k, c.Q);
     const double scale = lobe.coef_exact();
-    LobeKernel kernel = lobe.kernel(Variant::precise, Normalization::exact_coef, arithmetic);
+    inspect::LobeKernel kernel = inspect::kernel(lobe, Variant::precise, Normalization::exact_coef, arithmetic);
     const std::string name = testing::PrintToString(c);
     const bool large = c.n == 10;
-    if (large && arithmetic == Arithmetic::unfused)
-      EXPECT_EQ(kernel.form, LobeKernel::Form::polynomial) << name << ": the check was not run";
-    if (kernel.form != LobeKernel::Form::polynomial) continue;
+    if (large && arithmetic == inspect::Arithmetic::unfused)
+      EXPECT_EQ(kernel.form, inspect::LobeKernel::Form::polynomial) << name << ": the check was not run";
+    if (kernel.form != inspect::LobeKernel::Form::polynomial) continue;
     ++checked;
     const LobeSetup setup = lobe_setup(lobe, kernel.center_t);
     ASSERT_LE(setup.series_error, 0x1p-48);
     const double w_epicenter = setup.profile.w_epicenter;
     const detail::QuotientFit& reference = setup.reference;
-    if (large && arithmetic == Arithmetic::fused) {
+    if (large && arithmetic == inspect::Arithmetic::fused) {
       EXPECT_FALSE(detail::measured_epicenter_ulp(kernel, arithmetic, reference, scale,
                                                   w_epicenter, 2.0))
           << name << ": beyond the fused check's 2^17 floats";
@@ -652,16 +655,16 @@ TEST_P(EpicenterCheck, MeasuresWhatAnIndependentSweepMeasures) {
     const auto sweep = [&] {
       std::vector<float> t;
       for (float x = 1.0f;; x = std::nextafter(x, 0.0f)) {
-        if (std::pow(std::cos(lobe.c() * std::acos((long double)x)), lobe.k()) < 0.6L) break;
+        if (std::pow(std::cos(inspect::c(lobe) * std::acos((long double)x)), lobe.k()) < 0.6L) break;
         t.push_back(x);
       }
       std::vector<float> out(t.size());
-      const ScopedArch forced(*arch);
+      const inspect::ScopedArch forced(*arch);
       lobe.eval(t.data(), out.data(), t.size(), Variant::precise, Normalization::exact_coef);
       double worst = 0;
       for (std::size_t i = 0; i < t.size(); ++i) {
         const long double exact =
-            scale * std::pow(std::cos(lobe.c() * std::acos((long double)t[i])), lobe.k());
+            scale * std::pow(std::cos(inspect::c(lobe) * std::acos((long double)t[i])), lobe.k());
         worst = std::max(worst, double(std::fabs(out[i] - exact)) /
                                     detail::ulp_of_float(double(exact)));
       }
@@ -686,9 +689,9 @@ TEST_P(EpicenterCheck, MeasuresWhatAnIndependentSweepMeasures) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Arithmetic, EpicenterCheck,
-                         testing::Values(Arithmetic::fused, Arithmetic::unfused),
-                         [](const testing::TestParamInfo<Arithmetic>& info) {
-                           return info.param == Arithmetic::fused ? "fused" : "unfused";
+                         testing::Values(inspect::Arithmetic::fused, inspect::Arithmetic::unfused),
+                         [](const testing::TestParamInfo<inspect::Arithmetic>& info) {
+                           return info.param == inspect::Arithmetic::fused ? "fused" : "unfused";
                          });
 
 // A fit that misses is never kept: with every target made unreachable (2^-40 of the promise),
@@ -729,22 +732,22 @@ TEST(PerLaneFits, MeetTheirTargetFusedAndUnfused) {
   for (int k : {1, 3, 5}) {
     materials.push_back({k, 0.5, 500, 2000});
     const PerLaneLobe lobe(500, 2000, k, 0.5);
-    EXPECT_TRUE(lobe.kernel(Variant::precise).in_n) << "k = " << k;
+    EXPECT_TRUE(inspect::kernel(lobe, Variant::precise).in_n) << "k = " << k;
     // Fast: c^2 and coef one multiply-add each.
-    EXPECT_TRUE(lobe.kernel(Variant::fast).in_n) << "k = " << k;
-    EXPECT_EQ(lobe.kernel(Variant::fast).coef_n_degree, 0) << "k = " << k;
-    EXPECT_EQ(lobe.kernel(Variant::fast).c_squared_slope_lo, 0.0f) << "k = " << k;
+    EXPECT_TRUE(inspect::kernel(lobe, Variant::fast).in_n) << "k = " << k;
+    EXPECT_EQ(inspect::kernel(lobe, Variant::fast).coef_n_degree, 0) << "k = " << k;
+    EXPECT_EQ(inspect::kernel(lobe, Variant::fast).c_squared_slope_lo, 0.0f) << "k = " << k;
   }
   for (const PerLaneCase& c : materials) {
     const PerLaneLobe lobe(c.n_min, c.n_max, c.k, c.Q);
     for (Variant variant : {Variant::precise, Variant::fast}) {
       const double target = variant == Variant::fast ? 0x1p-19 : 0x1p-23;
-      const PerLaneKernel& kernel = lobe.kernel(variant);
+      const inspect::PerLaneKernel& kernel = inspect::kernel(lobe, variant);
       const double theta_k = ref::acos_of_root(c.Q, c.k);
       const double w_max =
           std::max(1e-6, 1 - std::cos(ref::KutlogLobe(c.n_min, c.k, c.Q).cutoff_angle()));
       struct Fit {
-        const PerLaneKernel::Coefficients& coefficients;
+        const inspect::PerLaneKernel::Coefficients& coefficients;
         int degree;
         double lo, hi, center;
         std::function<double(double)> g;

@@ -65,6 +65,7 @@
 #include "expect_invalid.hpp"
 #include "kutlog/accuracy.hpp"
 #include "kutlog/dispatch.hpp"
+#include "kutlog/inspect.hpp"
 #include "kutlog/sampling.hpp"
 #include "kutlog/sampling_reference.hpp"
 #include "lobe_case.hpp"
@@ -240,7 +241,7 @@ void narrowest_lobes_within_bounds(Draw draw) {
 
 class LobeSamplerPerArch : public testing::TestWithParam<Arch> {
  protected:
-  ScopedArch forced{GetParam()};
+  inspect::ScopedArch forced{GetParam()};
 };
 
 TEST_P(LobeSamplerPerArch, GridWithinBounds) { grid_within_bounds(draw_arrays); }
@@ -332,7 +333,7 @@ INSTANTIATE_TEST_SUITE_P(Grid, LobeSamplerChiSquare, testing::ValuesIn(sampling_
 // runs on the active one).
 class LobeSamplerChiSquarePerArch : public testing::TestWithParam<Arch> {
  protected:
-  ScopedArch forced{GetParam()};
+  inspect::ScopedArch forced{GetParam()};
 };
 TEST_P(LobeSamplerChiSquarePerArch, DirectionsMatchReferencePdf) {
   for (const LobeCase& lobe : kPerArchLobes)
@@ -367,7 +368,7 @@ TEST(LobeSampler, InvalidArgumentsNameTheParameter) {
   expect_invalid([] { LobeSampler(10, 3, 1.5, LobeUse::phong); }, "Q", "in (0, 1)");
   expect_invalid([] { LobeSampler(1e300, 3, 0.5, LobeUse::microfacet); }, "n", "below about");
   const LobeSampler sampler(1e30, 3, 0.5, LobeUse::phong);  // the peak still fits a float
-  EXPECT_GT(sampler.kernel().density_scale, 0.0f);
+  EXPECT_GT(inspect::kernel(sampler).density_scale, 0.0f);
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "kutlog/dispatch.hpp"
+#include "kutlog/inspect.hpp"
 #include "lobe_accuracy.hpp"
 
 namespace kutlog {
@@ -89,7 +90,7 @@ TEST(LobeScalar, TCutIsTheLastFloatEveryPathZeroes) {
     std::vector<float> out(t.size());
     for (Variant variant : tools::kLobeVariants)
       for (Normalization normalization : tools::kLobeNormalizations) {
-        EXPECT_EQ(lobe.kernel(variant, normalization, Arithmetic::scalar).t_cut, lobe.t_cut());
+        EXPECT_EQ(inspect::kernel(lobe, variant, normalization, inspect::Arithmetic::scalar).t_cut, lobe.t_cut());
         lobe.eval(t.data(), out.data(), t.size(), variant, normalization);
         for (std::size_t i = 0; i < t.size(); ++i) {
           EXPECT_EQ(lobe.eval(t[i], variant, normalization), 0.0f) << "t = " << t[i];
@@ -109,15 +110,15 @@ TEST(LobeScalar, PiecesOnTheUsualMaterials) {
       for (double Q : {0.1, 0.5, 0.9}) {
         const Lobe lobe(n, k, Q);
         for (Normalization normalization : tools::kLobeNormalizations) {
-          EXPECT_FALSE(lobe.precise_pieces(normalization).table.empty())
+          EXPECT_FALSE(inspect::precise_pieces(lobe, normalization).table.empty())
               << "n = " << n << ", k = " << k << ", Q = " << Q;
-          EXPECT_FALSE(lobe.fast_pieces(normalization).table.empty())
+          EXPECT_FALSE(inspect::fast_pieces(lobe, normalization).table.empty())
               << "n = " << n << ", k = " << k << ", Q = " << Q;
         }
       }
   const Lobe horizon(1.5, 3, 0.5);
   EXPECT_EQ(horizon.t_cut(), 0.0f);
-  EXPECT_TRUE(horizon.precise_pieces(Normalization::none).table.empty());
+  EXPECT_TRUE(inspect::precise_pieces(horizon, Normalization::none).table.empty());
 }
 
 // Every float of each support on the grid (sampled below the cut), and random lobes densely

@@ -16,6 +16,7 @@
 #include "common/ulp.hpp"
 #include "kutlog/accuracy.hpp"
 #include "kutlog/dispatch.hpp"
+#include "kutlog/inspect.hpp"
 #include "kutlog/math.hpp"
 #include "forced_arch_run.hpp"
 #include "test_archs.hpp"
@@ -32,7 +33,7 @@ double bound_of(std::string_view function) { return find_accuracy_bound(function
 
 class MathPerArch : public testing::TestWithParam<Arch> {
  protected:
-  ScopedArch forced{GetParam()};
+  inspect::ScopedArch forced{GetParam()};
 };
 
 // Places `value` at every position of arrays of every length up to three batches, the other

@@ -17,6 +17,7 @@
 #include "common/ulp.hpp"
 #include "kutlog/accuracy.hpp"
 #include "kutlog/dispatch.hpp"
+#include "kutlog/inspect.hpp"
 #include "record_measured.hpp"
 #include "sweep_samples.hpp"
 #include "test_archs.hpp"
@@ -73,7 +74,7 @@ class Exhaustive : public testing::TestWithParam<Case> {};
 
 TEST_P(Exhaustive, EveryFloatOfTheDomainWithinTheBound) {
   const auto& [name, arch] = GetParam();
-  const ScopedArch forced(arch);
+  const inspect::ScopedArch forced(arch);
   LargestUlp largest(name, find_accuracy_bound(name)->max_ulp());
   tools::SweepOptions sampled;
   sampled.samples = sweep_samples();

@@ -18,6 +18,7 @@
 #include <tuple>
 #include <vector>
 
+#include "kutlog/baselines.hpp"
 #include "kutlog/detail/math_functions.hpp"
 #include "kutlog/dispatch.hpp"
 #include "kutlog/lobe.hpp"

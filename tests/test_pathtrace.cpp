@@ -13,6 +13,7 @@
 #include "common/pathtrace.hpp"
 #include "kutlog/accuracy.hpp"
 #include "kutlog/dispatch.hpp"
+#include "kutlog/inspect.hpp"
 #include "kutlog/sampling.hpp"
 #include "test_archs.hpp"
 
@@ -34,7 +35,7 @@ constexpr double kAlbedoAccuracy = 5e-8;
 
 double pdf_allowance(const Material& material) {
   const double support = 2 * ref::pi * (1 - std::cos(material.brdf().lobe().integration_limit()));
-  return kSamplerBound.pdf_error * double(material.sampler().kernel().density_scale) * support;
+  return kSamplerBound.pdf_error * double(inspect::kernel(material.sampler()).density_scale) * support;
 }
 
 // Of the mean of count estimates; 0 where rounding makes the variance of all but equal
@@ -85,7 +86,7 @@ TEST(PathtraceWhiteFurnace, EachSamplerAveragesToTheAlbedo) {
 // support's solid angle (E |pdf - pdf_ref| / pdf over draws of pdf).
 class PathtraceWhiteFurnacePerArch : public testing::TestWithParam<Arch> {
  protected:
-  ScopedArch forced{GetParam()};
+  inspect::ScopedArch forced{GetParam()};
 };
 
 TEST_P(PathtraceWhiteFurnacePerArch, SimdSamplerAveragesToTheAlbedo) {

@@ -11,6 +11,7 @@
 
 #include "kutlog/accuracy.hpp"
 #include "kutlog/dispatch.hpp"
+#include "kutlog/inspect.hpp"
 #include "kutlog/reference.hpp"
 #include "cosine_error.hpp"
 #include "kutlog/lobe.hpp"
@@ -53,7 +54,7 @@ Scene random_scene(std::size_t count, unsigned seed) {
 
 class ShadePerArch : public testing::TestWithParam<Arch> {
  protected:
-  ScopedArch forced{GetParam()};
+  inspect::ScopedArch forced{GetParam()};
 };
 
 // out = coef F(t) max(N.L, 0) with t and N.L the kernel's float cosines: each within its

@@ -14,6 +14,7 @@
 
 #include "common/cli.hpp"
 #include "common/label_font.hpp"
+#include "kutlog/baselines.hpp"
 #include "kutlog/lobe.hpp"
 #include "kutlog/reference.hpp"
 #include "kutlog/shade.hpp"

@@ -13,7 +13,9 @@
 #include "common/table.hpp"
 #include "common/ulp.hpp"
 #include "kutlog/accuracy.hpp"
+#include "kutlog/baselines.hpp"
 #include "kutlog/dispatch.hpp"
+#include "kutlog/inspect.hpp"
 #include "kutlog/lobe.hpp"
 #include "kutlog/reference.hpp"
 
@@ -95,7 +97,7 @@ int measure_lobes(const std::vector<kutlog::Arch>& archs, const std::vector<std:
   Table table({"function", "arch", "variant", "n", "k", "Q", "max_abs_err", "max_ulp_epicenter",
                "worst_input", "min_output", "max_output"});
   for (kutlog::Arch arch : archs) {
-    const kutlog::ScopedArch forced(arch);
+    const kutlog::inspect::ScopedArch forced(arch);
     for (int k : k_list)
       for (double Q : q_list)
         for (const std::string& n_text : n_list) {
@@ -159,7 +161,7 @@ int measure_power_poly(const std::vector<kutlog::Arch>& archs,
   Table table({"function", "arch", "variant", "n", "max_abs_err", "max_ulp_epicenter",
                "worst_input", "min_output", "max_output"});
   for (kutlog::Arch arch : archs) {
-    const kutlog::ScopedArch forced(arch);
+    const kutlog::inspect::ScopedArch forced(arch);
     for (const std::string& variant_name : variants)
       for (const std::string& n_text : n_list)
         for (bool normalized : {false, true}) {
@@ -304,7 +306,7 @@ int main(int argc, char** argv) {
 
     std::vector<Row> rows;
     for (kutlog::Arch arch : archs) {
-      const kutlog::ScopedArch forced(arch);  // unsupported: a clear error, exit 1
+      const kutlog::inspect::ScopedArch forced(arch);  // unsupported: a clear error, exit 1
       const std::string arch_label(kutlog::arch_name(arch));
       for (const std::string& name : functions) {
         SweepOptions options;

@@ -45,13 +45,5 @@ void force_arch(Arch arch);
 void force_arch(std::string_view name);
 void reset_arch();
 
-class ScopedArch {
- public:
-  explicit ScopedArch(Arch arch) { force_arch(arch); }
-  ~ScopedArch() { reset_arch(); }
-  ScopedArch(const ScopedArch&) = delete;
-  ScopedArch& operator=(const ScopedArch&) = delete;
-};
-
 }  // namespace kutlog
 KUTLOG_API_END

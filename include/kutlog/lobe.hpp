@@ -1,5 +1,6 @@
 // kutlog/lobe.hpp: the F_kutlog lobe as a shading kernel, for one material: built once from
-// (n, k, Q), then eval() shades cosines t = N.H (Blinn) or R.V (Phong). docs/accuracy.md.
+// (n, k, Q), then eval() shades cosines t = N.H (Blinn) or R.V (Phong), one fragment inline
+// or arrays dispatched to the best arch. How the bounds are measured: docs/accuracy.md.
 #pragma once
 
 #include <cstddef>
@@ -13,26 +14,26 @@
 KUTLOG_API_BEGIN
 namespace kutlog {
 
+// precise: within 2^-22 of the peak, 2 ulps where F >= 0.6. fast: within 2^-16 of the peak.
 enum class Variant : std::uint8_t { precise, fast };
+// none: F in [0, 1]. exact_coef: coef_exact() F, the energy-conserving lobe.
 enum class Normalization : std::uint8_t { none, exact_coef };
 
-// SIMD lanes with or without FMA, or scalar (Lobe::eval(float t)): the certified pieces
-// (precise cubics in double, fast quadratics in float), or where those are not certified, a
-// kernel in double or in float; each bounded for any fusing.
-enum class Arithmetic : std::uint8_t { unfused, fused, scalar };
-
-// The error bound the setup certified for one kernel, in the contract's units.
-struct KernelCertificate {
-  double abs_error = 0, epicenter_ulp = 0;
-};
-
-// Output against the exact scale * F (scale: coef_exact() normalized, else 1), every arch:
-// 0 <= out <= peak; precise: within 2^-22 scale, 2 ulps where F >= 0.6; fast: 2^-16 scale.
+// One material's lobe F(t) = cos^k(c acos t), 0 past the cut-off angle pi / (2c), with
+// c = acos(Q^(1/k)) / acos(Q^(1/n)): it meets t^n at t = 1 and where t^n = Q.
+// Contract, every eval on every arch, against the exact scale F (scale: coef_exact() when
+// normalized, else 1): 0 <= out <= peak (the output at t = 1); precise within 2^-22 scale and
+// 2 ulps where F >= 0.6; fast within 2^-16 scale (kLobeBounds, kutlog/accuracy.hpp).
+// Data rule: t > 1 (rounding of normalized vectors) gives the peak, t <= t_cut() (so t <= 0)
+// gives 0, NaN gives NaN. Thread-safe (const); no eval allocates or throws.
 class Lobe {
  public:
-  // std::invalid_argument naming the parameter unless n > 0 with coef_exact() <= FLT_MAX,
-  // k in [1, 64], Q in (0, 1); std::runtime_error if the CPU runs no compiled arch.
+  // n finite and > 0 (any real) with coef_exact() <= FLT_MAX, k in [1, 64], Q in (0, 1):
+  // std::invalid_argument naming the parameter and its range otherwise (for n = 0, a flat or
+  // absent specular, shade with a constant instead); std::runtime_error on a CPU that runs
+  // no compiled arch. Tens of microseconds: once per material, not per fragment.
   Lobe(double n, int k, double Q);
+  // k of an integer type only: Lobe(50, 0.5, 3)'s swapped arguments do not compile.
   template <class N, class K, class Anchor>
     requires(!std::is_integral_v<K>)
   Lobe(N, K, Anchor) = delete;
@@ -40,97 +41,86 @@ class Lobe {
   double n() const { return n_; }
   int k() const { return k_; }
   double Q() const { return Q_; }
-  double c() const { return c_; }
+  // The angle past which F is 0, pi / (2c), at most pi/2.
   double cutoff_angle() const { return cutoff_angle_; }
+  // 1 / (2 pi integral of F cos sin over the hemisphere): exact_coef's scale.
   double coef_exact() const { return coef_exact_; }
   // The largest float at or below cos(cutoff_angle()): every eval(t <= t_cut()) is 0. eval
   // selects past the cut, never branches there (random order costs no misprediction); a
-  // caller whose fragments past the cut come in runs, as a rasterizer's, skips it on a branch
-  // of its own.
+  // caller whose fragments past the cut come in runs, as a rasterizer's, may skip them on a
+  // branch of its own.
   float t_cut() const { return t_cut_; }
 
-  // One fragment, inline (GCC would otherwise call it for its size): the certified pieces, or
-  // where the setup could not certify them (lobes cut at the horizon, high k), out of line,
-  // the kernel of Arithmetic::scalar.
+  // One fragment, where pow(max(t, 0), n) was: inline, no dispatch, no branch on t. A
+  // polynomial from the setup's certified table of pieces, or where the setup could not
+  // certify them (lobes cut at the horizon, high k), the scalar kernel out of line. The
+  // contract holds whatever the caller's flags (FMA, -ffp-contract).
   [[gnu::always_inline]] float eval(float t, Variant variant = Variant::precise,
                                     Normalization normalization = Normalization::none) const
       noexcept {
     if (variant == Variant::fast) {
-      const FastScalarPieces& pieces = fast_pieces(normalization);
+      const detail::FastScalarPieces& pieces = fast_pieces_[int(normalization)];
       if (!pieces.table.empty()) [[likely]] return pieces.evaluate(t);
     } else {
-      const ScalarPieces& pieces = precise_pieces(normalization);
+      const detail::ScalarPieces& pieces = precise_pieces_[int(normalization)];
       if (!pieces.table.empty()) [[likely]] return pieces.evaluate(t);
     }
     return eval_by_kernel(t, variant, normalization);
   }
-  // Floats only: a double t would be rounded without a word.
+  // Floats only: a double t near 1 would be rounded without a word; write eval(float(t)).
   template <class T>
     requires(std::is_arithmetic_v<T> && !std::is_same_v<T, float>)
   float eval(T, Variant = Variant::precise, Normalization = Normalization::none) const = delete;
 
-  // Inline up to one indirect call, so that constant arguments fold the kernel's index.
+  // out[i] = F(t[i]) (or coef_exact() F), on the active arch (kutlog/dispatch.hpp). Any count
+  // and alignment; out may equal t, else no overlap. Inline up to one indirect call, so that
+  // constant arguments fold the kernel's index.
   void eval(const float* t, float* out, std::size_t count, Variant variant = Variant::precise,
             Normalization normalization = Normalization::none) const noexcept {
     const detail::LobeArrayKernels* loops =
         detail::active_lobe_loops.load(std::memory_order_acquire);
     if (!loops) [[unlikely]]
       return eval_out_of_line(t, out, count, variant, normalization);
-    const int index = kernel_index(variant, normalization,
-                                   loops->fused_fma ? Arithmetic::fused : Arithmetic::unfused);
+    const int index =
+        kernel_index(variant, normalization,
+                     loops->fused_fma ? detail::Arithmetic::fused : detail::Arithmetic::unfused);
     loops->by_slot[array_slots_[index]](kernels_[index], t, out, count);
   }
 
-  // The kernel fitted for that arithmetic, for users of kutlog/simd/lobe.hpp. The one of
-  // Arithmetic::scalar is fitted only where that variant's pieces are empty; elsewhere only
-  // its t_cut is set.
-  const LobeKernel& kernel(Variant variant, Normalization normalization,
-                           bool fused_fma) const noexcept {
-    return kernel(variant, normalization, fused_fma ? Arithmetic::fused : Arithmetic::unfused);
-  }
-  const LobeKernel& kernel(Variant variant, Normalization normalization,
-                           Arithmetic arithmetic) const noexcept {
-    return kernels_[kernel_index(variant, normalization, arithmetic)];
-  }
-  const KernelCertificate& certificate(Variant variant, Normalization normalization,
-                                       Arithmetic arithmetic) const {
-    return certificates_[kernel_index(variant, normalization, arithmetic)];
-  }
-  // The scalar eval's pieces of each variant; empty where it runs the kernel of
-  // Arithmetic::scalar, which is fitted only then.
-  const ScalarPieces& precise_pieces(Normalization normalization) const {
-    return precise_pieces_[int(normalization)];
-  }
-  const FastScalarPieces& fast_pieces(Normalization normalization) const {
-    return fast_pieces_[int(normalization)];
-  }
-
  private:
+  friend struct detail::Inspector;
   float eval_by_kernel(float t, Variant variant, Normalization normalization) const noexcept;
   [[gnu::cold]] void eval_out_of_line(const float* t, float* out, std::size_t count,
                                       Variant variant, Normalization normalization) const noexcept;
+  static constexpr int kernel_index(Variant variant, Normalization normalization,
+                                    detail::Arithmetic arithmetic) {
+    return (int(variant) * 2 + int(normalization)) * 3 + int(arithmetic);
+  }
 
   double n_, Q_;
   int k_;
   double c_, cutoff_angle_, coef_exact_;
   float t_cut_;
-  static constexpr int kernel_index(Variant variant, Normalization normalization,
-                                    Arithmetic arithmetic) {
-    return (int(variant) * 2 + int(normalization)) * 3 + int(arithmetic);
-  }
-  ScalarPieces precise_pieces_[2];  // by normalization
-  FastScalarPieces fast_pieces_[2];
-  LobeKernel kernels_[2 * 2 * 3];
-  KernelCertificate certificates_[2 * 2 * 3];
+  detail::ScalarPieces precise_pieces_[2];  // by normalization
+  detail::FastScalarPieces fast_pieces_[2];
+  detail::LobeKernel kernels_[2 * 2 * 3];  // by kernel_index
+  detail::KernelCertificate certificates_[2 * 2 * 3];
   // Each kernel's slot in detail::LobeArrayKernels, computed at setup.
   std::uint8_t array_slots_[2 * 2 * 3] = {};
 };
 
-// A lobe whose n varies per lane (a glossiness map), k and Q per material; lanes' n clamped
-// to [n_min, n_max]. Precise within 2^-20 scale, fast 2^-16; peak within kPerLanePeakError
-// (kutlog/accuracy.hpp).
+// A lobe whose n varies per lane (a glossiness map), k and Q per material: c and coef_exact
+// computed per lane from polynomials fitted over [n_min, n_max] at setup; a lane's n outside
+// it is clamped to it. Contract as Lobe's, with the bounds of kLobeBounds' per_lane rows
+// (precise within 2^-20 scale, fast 2^-16), the peak within kPerLanePeakError of
+// coef_exact(n) normalized, exactly 1 otherwise; past the cut-off exactly 0. Data rule as
+// Lobe's; NaN t or n gives NaN. One fragment at a time a map of 8-bit levels is faster as
+// one Lobe per level.
 class PerLaneLobe {
  public:
+  // k <= n_min <= n_max <= FLT_MAX (the lanes' n are floats), k in [1, 64], Q in (0, 1):
+  // std::invalid_argument naming the parameter and its range otherwise, also for a range too
+  // wide for one fit (tiny Q with n over many decades: split it).
   PerLaneLobe(double n_min, double n_max, int k, double Q);
   template <class N1, class N2, class K, class Anchor>
     requires(!std::is_integral_v<K>)
@@ -138,66 +128,26 @@ class PerLaneLobe {
 
   int k() const { return k_; }
   double Q() const { return Q_; }
-  // One fragment: the variant's fits evaluated in double, rounded once.
+  // One fragment: the variant's fits in double, branch-free, rounded once.
   float eval(float t, float n, Variant variant = Variant::precise,
              Normalization normalization = Normalization::none) const noexcept {
-    return kernel(variant).evaluate(t, n, normalization == Normalization::exact_coef);
+    return kernels_[int(variant)].evaluate(t, n, normalization == Normalization::exact_coef);
   }
   template <class T, class N>
     requires(std::is_arithmetic_v<T> && std::is_arithmetic_v<N> &&
              !(std::is_same_v<T, float> && std::is_same_v<N, float>))
   float eval(T, N, Variant = Variant::precise, Normalization = Normalization::none) const = delete;
+  // out[i] = F(t[i]) at n[i], on the active arch; any count and alignment.
   void eval(const float* t, const float* n, float* out, std::size_t count,
             Variant variant = Variant::precise,
             Normalization normalization = Normalization::none) const noexcept;
-  const PerLaneKernel& kernel(Variant variant = Variant::precise) const {
-    return kernels_[int(variant)];
-  }
 
  private:
+  friend struct detail::Inspector;
   int k_;
   double Q_;
-  PerLaneKernel kernels_[2];  // by Variant
+  detail::PerLaneKernel kernels_[2];  // by Variant
 };
-
-// scale * t^n by 2^(n log2 t) with polynomials fitted for that n: the strongest pow-based
-// peer. Within 2^-22 scale (precise), 2^-16 (fast); 0 where scale t^n < half of that.
-class PowerPoly {
- public:
-  PowerPoly(double n, Variant variant = Variant::precise, double scale = 1);
-  template <class N, class V, class S>
-    requires(!std::is_same_v<V, Variant>)
-  PowerPoly(N, V, S) = delete;
-  void eval(const float* t, float* out, std::size_t count) const noexcept;
-  const PowerPolyKernel& kernel() const { return kernel_; }
-
- private:
-  PowerPolyKernel kernel_;
-};
-
-// The per-lane peer of PowerPoly, for a glossiness map: scale(n) t^n with n per lane in
-// [n_min, n_max] (clamped to it), by 2^(n log2 t) with polynomials fitted for that range, and
-// scale(n) the Blinn-Phong coef (ref::blinn_phong_exact_coef) with Normalization::exact_coef,
-// else 1. Within PerLaneLobe's bounds of scale(n), 2^-20 (precise) and 2^-16 (fast); 0 where
-// scale t^n < half of that. std::invalid_argument unless n_min >= 44 (precise) or 36 (fast),
-// where t^n at t = 1/sqrt(2) is below a quarter of that (the log's domain), and n_min <= n_max
-// <= FLT_MAX.
-class PerLanePowerPoly {
- public:
-  PerLanePowerPoly(double n_min, double n_max, Variant variant = Variant::precise,
-                   Normalization normalization = Normalization::none);
-  void eval(const float* t, const float* n, float* out, std::size_t count) const noexcept;
-  const PerLanePowerPolyKernel& kernel() const { return kernel_; }
-
- private:
-  PerLanePowerPolyKernel kernel_;
-};
-
-// Baselines: scale t^n by xsimd::pow or pow_u10, and Schlick's t / (n - n t + t); n is
-// checked per call (std::invalid_argument before anything is written).
-void blinn_phong_xsimd(const float* t, float* out, std::size_t count, float n, float scale = 1);
-void blinn_phong_u10(const float* t, float* out, std::size_t count, float n, float scale = 1);
-void schlick(const float* t, float* out, std::size_t count, float n);
 
 }  // namespace kutlog
 KUTLOG_API_END

@@ -1,105 +1,54 @@
 // kutlog/sampling.hpp: importance sampling of the normalized F_kutlog lobe for one material,
-// in SIMD arrays or one sample per call; the reference is kutlog/sampling_reference.hpp.
-// Contract (bounds in kSamplerBound, kutlog/accuracy.hpp), data rule and method:
-// docs/api-notes.md. Domain as Lobe's, and the peak pdf must fit a float (n up to ~10^37).
+// in SIMD arrays or one sample per call. The spec it is tested against is
+// kutlog/sampling_reference.hpp; its bounds are kSamplerBound (kutlog/accuracy.hpp).
 #pragma once
 
-#include <algorithm>
-#include <array>
-#include <bit>
 #include <cstddef>
-#include <cstdint>
 #include <type_traits>
 
 #include "kutlog/api.hpp"
-#include "kutlog/sampling_reference.hpp"
+#include "kutlog/detail/sampler_kernel.hpp"
 
 KUTLOG_API_BEGIN
 namespace kutlog {
 
-using ref::LobeUse;
+// What is sampled. microfacet: half vectors wm about the normal N (z), pdf D(wm) cos(theta_m)
+// with D = coef_exact F(N.wm). phong: directions w about the mirror direction R (z), pdf
+// F(R.w) / (2 pi J). Rotating into the shading frame and reflecting are the caller's.
+enum class LobeUse { microfacet, phong };
 
-// How u1 is cut into cells: lower_cells even cells of [0, 1/2], then 2^band_bits bands of
-// each binade [2^e, 2^(e+1)) of w = 1 - u1, e = top_exponent down to -24 (w >= 2^-24 for a
-// float u1 < 1). With no lower cells and top_exponent -1, the bands of w's top binade are
-// even cells of u1 in (0, 1/2], and every cell is found from the bits of w alone.
-struct SamplerCells {
-  static constexpr int kLowestExponent = -24;
-  int lower_cells, band_bits, top_exponent = -2;
-  constexpr int bands() const { return 1 << band_bits; }
-  constexpr int binades() const { return top_exponent - kLowestExponent + 1; }
-  constexpr int count() const { return lower_cells + binades() * bands(); }
-  constexpr int upper_cell(int exponent, int band) const {
-    return lower_cells + (top_exponent - exponent) * bands() + band;
-  }
-  // upper_cell from the top bits s = (biased exponent << band_bits) | band of a float w.
-  constexpr int upper_cell_offset() const { return lower_cells + (127 + top_exponent) * bands(); }
-  // The cell of u1 <= 1/2 (lower) or of w = 1 - u1, and x in it (the setup).
-  struct Position {
-    int cell;
-    double x;
-  };
-  Position position(bool lower, double argument) const {
-    if (lower) {
-      const double scaled = argument * (2 * lower_cells);
-      const int cell = std::min(int(scaled), lower_cells - 1);
-      return {cell, scaled - cell - 0.5};
-    }
-    constexpr std::uint64_t kMantissaBits = (std::uint64_t(1) << 52) - 1;
-    const auto bits = std::bit_cast<std::uint64_t>(argument);
-    const int exponent = int(bits >> 52) - 1023;
-    const double banded =
-        (std::bit_cast<double>((bits & kMantissaBits) | std::bit_cast<std::uint64_t>(1.0)) - 1) *
-        bands();
-    const int band = std::min(int(banded), bands() - 1);
-    return {upper_cell(exponent, band), banded - band - 0.5};
-  }
-};
-
-// What the sampling kernels need of one material: the inverse CDF fitted for AVX-512's
-// two-register permutes (coarse); and per cell of kRowCells (all found from the bits of
-// 1 - u1), the haversine sin^2(theta/2) and the pdf of the direction it gives (rows), which
-// leave no sine of theta or power to evaluate: the one-sample call's and the other archs'.
-struct SamplerKernel {
-  static constexpr SamplerCells kCoarse{8, 0}, kRowCells{0, 4, -1};
-  static constexpr int kCoarseMaxDegree = 12;
-  static constexpr int kCoarseStride = 32;  // two registers of 16 floats per coefficient
-  // A cell's row: sin^2(theta/2) / (haversine_scale min(2 u1, 1)), then the pdf, cubics (zeros above a lower
-  // degree); 8 floats, half a cache line, that SIMD loads whole and transposes.
-  static constexpr int kRowDegree = 3, kRowStride = 2 * (kRowDegree + 1);
-
-  int coarse_degree = 0;  // of every cell's polynomial
-  int k = 1;
-  bool cosine_weighted = true;  // microfacet: the pdf has the factor cos(theta)
-  float c = 1;
-  float limit = 0;          // G rounded down to a float
-  float density_scale = 0;  // the pdf at theta = 0, the peak
-  // The rows hold the haversine over haversine_scale, a power of 4 at or above sin^2(G / 2):
-  // for the narrowest lobes sin^2(theta/2) is below the smallest normal float, its quotient
-  // is not. sine_scale = 2 sqrt(haversine_scale), exact.
-  float haversine_scale = 1, sine_scale = 2;
-  float haversine_limit = 0;  // sin^2(G / 2) / haversine_scale, rounded down
-  // Coefficient j of cell i at [j * kCoarseStride + i]: one row per coefficient.
-  std::array<float, kCoarseStride*(kCoarseMaxDegree + 1)> coarse{};
-  alignas(32) std::array<float, kRowCells.count() * kRowStride> rows{};
-};
-
+// Where LobeSampler::sample writes: direction (x, y, z) in the use's frame and its pdf over
+// solid angle, count floats each.
 struct DirectionSamples {
   float* x;
   float* y;
   float* z;
-  float* pdf;  // over solid angle
+  float* pdf;
 };
 
+// One sample: the direction in the use's frame and its pdf over solid angle.
 struct SampledDirection {
   float x, y, z, pdf;
 };
 
+// Draws directions from the normalized lobe of Lobe(n, k, Q), by its polar angle's inverse CDF
+// fitted once per material (about a millisecond) and a uniform azimuth: no pow per sample.
+// Contract on every arch, theta the returned direction's angle from z, G the lobe's support:
+//   |theta - inverse_cdf(u1)| <= kSamplerBound.theta_error * G;
+//   |pdf - pdf(direction)| <= kSamplerBound.pdf_error * peak (the pdf at theta = 0);
+//   the azimuth within kSamplerBound.phi_error radians of 2 pi u2;
+//   0 <= pdf <= peak, z >= 0, |direction| = 1 within a few float roundings.
+// (The angles' bounds hold where x and y are normal floats: for lobes near the top of n's
+// domain and u1 below about 2^-60 they are subnormal.)
+// Data rule: u1 and u2 below 0 count as 0, at or above 1 as the float below 1; NaN in either
+// gives NaN in every output of that sample. Thread-safe; no allocation per call.
 class LobeSampler {
  public:
-  // std::invalid_argument naming the parameter and its range; std::runtime_error if the CPU
-  // runs no compiled arch.
+  // n finite and > 0 with the peak pdf within FLT_MAX (n up to about 10^37), k in [1, 64],
+  // Q in (0, 1): std::invalid_argument naming the parameter and its range otherwise;
+  // std::runtime_error on a CPU that runs no compiled arch.
   LobeSampler(double n, int k, double Q, LobeUse use);
+  // k of an integer type only: LobeSampler(50, 0.5, 3, use) does not compile.
   template <class N, class K, class Anchor>
     requires(!std::is_integral_v<K>)
   LobeSampler(N, K, Anchor, LobeUse) = delete;
@@ -108,16 +57,13 @@ class LobeSampler {
   int k() const { return kernel_.k; }
   double Q() const { return Q_; }
   LobeUse use() const { return use_; }
-  double limit() const { return limit_; }
-  // The largest fit error seen at setup: theta's in units of G, sin^2(theta/2)'s of its top, the
-  // pdf's of the peak pdf.
-  double fit_error() const { return fit_error_; }
-  const SamplerKernel& kernel() const { return kernel_; }
 
+  // count samples from u1[i], u2[i], dispatched to the active arch. Any count and alignment;
+  // the outputs must not overlap the inputs.
   void sample(const float* u1, const float* u2, DirectionSamples out,
               std::size_t count) const noexcept;
 
-  // One sample, with the arrays' contract (scalar float, from SamplerKernel::rows).
+  // One sample (a path tracer's bounce), scalar float code with the arrays' contract.
   SampledDirection sample(float u1, float u2) const noexcept;
   // Floats only: a double u1 just below 1 would round to 1 without a word.
   template <class U1, class U2>
@@ -125,9 +71,10 @@ class LobeSampler {
   SampledDirection sample(U1, U2) const = delete;
 
  private:
+  friend struct detail::Inspector;
   double n_, Q_, limit_, fit_error_;
   LobeUse use_;
-  SamplerKernel kernel_;
+  detail::SamplerKernel kernel_;
 };
 
 }  // namespace kutlog

@@ -9,11 +9,12 @@
 
 #include "kutlog/api.hpp"
 #include "kutlog/reference.hpp"
+#include "kutlog/sampling.hpp"
 
 KUTLOG_API_BEGIN
 namespace kutlog::ref {
 
-enum class LobeUse { microfacet, phong };
+using kutlog::LobeUse;
 
 struct DirectionSample {
   Vec3 direction;

@@ -19,13 +19,13 @@ namespace kutlog::detail {
 
 // PerLaneLobe's array loop, on the instance of PreparedPerLaneLobe that matches the kernel.
 template <class Arch, bool kInN, bool kWClamped>
-void per_lane_instance(const PerLaneKernel& kernel, bool normalized, const float* t,
+void per_lane_instance(const detail::PerLaneKernel& kernel, bool normalized, const float* t,
                        const float* n, float* out, std::size_t count) {
   const auto run = [&](const auto& lobe) { map_arrays<Arch, 2>(lobe, {t, n}, out, count, 1.0f); };
   using simd::PreparedPerLaneLobe;
-  using Power = PerLaneKernel::Power;
+  using Power = detail::PerLaneKernel::Power;
   constexpr Variant kFast = Variant::fast, kPrecise = Variant::precise;
-  if (kernel.r_degree == PerLaneKernel::kFastBaseDegree)
+  if (kernel.r_degree == detail::PerLaneKernel::kFastBaseDegree)
     return run(PreparedPerLaneLobe<Arch, kFast, Power::in_float, kInN, kWClamped>(kernel,
                                                                                   normalized));
   if (kernel.power == Power::in_float)
@@ -38,7 +38,7 @@ void per_lane_instance(const PerLaneKernel& kernel, bool normalized, const float
   run(PreparedPerLaneLobe<Arch, kPrecise, Power::in_double, kInN, kWClamped>(kernel, normalized));
 }
 template <class Arch>
-void per_lane_array(const PerLaneKernel& kernel, bool normalized, const float* t, const float* n,
+void per_lane_array(const detail::PerLaneKernel& kernel, bool normalized, const float* t, const float* n,
                     float* out, std::size_t count) {
   const auto instance = [&]<bool kInN, bool kWClamped>() {
     per_lane_instance<Arch, kInN, kWClamped>(kernel, normalized, t, n, out, count);

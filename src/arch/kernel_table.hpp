@@ -17,23 +17,23 @@ using BinaryScalarArrayKernel = void (*)(const float*, float, float*, std::size_
 
 using PowerLobeArrayKernel = void (*)(const float*, float n, float scale, float*, std::size_t);
 
-using ShadeVectorsKernel = void (*)(const LobeKernel&, const ShadeOptions&, Vectors, Vectors,
+using ShadeVectorsKernel = void (*)(const detail::LobeKernel&, const ShadeOptions&, Vectors, Vectors,
                                     Vectors, float*, std::size_t, const std::uint8_t*);
-using ShadeDirectionsKernel = void (*)(const LobeKernel&, const ShadeOptions&, Vectors, Direction,
+using ShadeDirectionsKernel = void (*)(const detail::LobeKernel&, const ShadeOptions&, Vectors, Direction,
                                        Direction, float*, std::size_t, const std::uint8_t*);
-using ShadeCosinesKernel = void (*)(const LobeKernel&, const ShadeOptions&, const float*,
+using ShadeCosinesKernel = void (*)(const detail::LobeKernel&, const ShadeOptions&, const float*,
                                     const float*, float*, std::size_t, const std::uint8_t*);
 
-using PowerPolyArrayKernel = void (*)(const PowerPolyKernel&, const float*, float*, std::size_t);
-using PerLanePowerPolyArrayKernel = void (*)(const PerLanePowerPolyKernel&, const float*,
+using PowerPolyArrayKernel = void (*)(const detail::PowerPolyKernel&, const float*, float*, std::size_t);
+using PerLanePowerPolyArrayKernel = void (*)(const detail::PerLanePowerPolyKernel&, const float*,
                                              const float*, float*, std::size_t);
 
-using PerLaneArrayKernel = void (*)(const PerLaneKernel&, bool normalized, const float*,
+using PerLaneArrayKernel = void (*)(const detail::PerLaneKernel&, bool normalized, const float*,
                                     const float*, float*, std::size_t);
 
-using SampleArrayKernel = void (*)(const SamplerKernel&, const float* u1, const float* u2,
+using SampleArrayKernel = void (*)(const detail::SamplerKernel&, const float* u1, const float* u2,
                                    DirectionSamples, std::size_t);
-using SampleOneKernel = SampledDirection (*)(const SamplerKernel&, float u1, float u2);
+using SampleOneKernel = SampledDirection (*)(const detail::SamplerKernel&, float u1, float u2);
 
 // The reference of src/epicenter_check.hpp's sweep: scale - (1 - t) p(center - t), p's
 // coefficients c[0..degree] in double, and the bound on its own error.

@@ -34,7 +34,7 @@ void sample_lobe_batches(const Sampler& sampler, const float* u1, const float* u
 }
 
 template <class Arch>
-void sample_lobe_array(const SamplerKernel& kernel, const float* u1, const float* u2,
+void sample_lobe_array(const detail::SamplerKernel& kernel, const float* u1, const float* u2,
                        DirectionSamples out, std::size_t count) {
   if constexpr (simd::PreparedSampler<Arch>::kRaisesPower)
     if (simd::PreparedSampler<Arch>::double_power_needed(kernel))

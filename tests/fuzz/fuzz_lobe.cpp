@@ -16,6 +16,8 @@
 #include "common/ulp.hpp"
 #include "fuzz_support.hpp"
 #include "kutlog/accuracy.hpp"
+#include "kutlog/baselines.hpp"
+#include "kutlog/inspect.hpp"
 #include "kutlog/lobe.hpp"
 
 namespace kutlog::fuzz {
@@ -154,7 +156,7 @@ void fuzz_per_lane_lobe(FuzzedDataProvider& data) {
       call);
   if (!lobe) return;
 
-  const float critical_t[] = {1.0f, 0.0f, 1.0f - lobe->kernel().w_limit};
+  const float critical_t[] = {1.0f, 0.0f, 1.0f - inspect::kernel(*lobe).w_limit};
   const float critical_n[] = {float(parameters.n_min), float(parameters.n_max),
                               float(parameters.k)};
   const ArrayArguments arguments = array_arguments(data, critical_t);

@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "kutlog/accuracy.hpp"
+#include "kutlog/inspect.hpp"
 
 namespace kutlog::fuzz {
 namespace {
@@ -133,7 +134,7 @@ void check_same_bits(std::span<const float> in_place, std::span<const float> out
 void for_each_supported_arch(const std::function<void(Arch)>& body) {
   static const std::vector<Arch> archs = supported_archs();
   for (Arch arch : archs) {
-    const ScopedArch forced(arch);
+    const inspect::ScopedArch forced(arch);
     body(arch);
   }
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/ulp.hpp"
+#include "kutlog/inspect.hpp"
 #include "kutlog/reference.hpp"
 
 namespace kutlog::tools {
@@ -44,7 +45,7 @@ void LobeErrors::merge(const LobeErrors& from) {
 }
 
 double epicenter_edge(const Lobe& lobe) {
-  const double x = std::acos(std::pow(0.6, 1.0 / lobe.k())) / lobe.c();  // F(x) = 0.6
+  const double x = std::acos(std::pow(0.6, 1.0 / lobe.k())) / inspect::c(lobe);  // F(x) = 0.6
   return x >= ref::pi / 2 ? 0.0 : std::cos(x);
 }
 
@@ -86,8 +87,8 @@ std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep, LobeEv
   std::vector<std::uint32_t> kernel_cuts;
   for (Variant variant : kLobeVariants)
     for (Normalization normalization : kLobeNormalizations)
-      for (Arithmetic arithmetic : {Arithmetic::unfused, Arithmetic::fused}) {
-        const std::uint32_t key = order_key(lobe.kernel(variant, normalization, arithmetic).t_cut);
+      for (inspect::Arithmetic arithmetic : {inspect::Arithmetic::unfused, inspect::Arithmetic::fused}) {
+        const std::uint32_t key = order_key(inspect::kernel(lobe, variant, normalization, arithmetic).t_cut);
         const auto near = [&](std::uint32_t cut) {
           return std::max(key, cut) - std::min(key, cut) <= kernel_cut_reach / 2;
         };

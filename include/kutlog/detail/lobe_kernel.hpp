@@ -13,7 +13,7 @@
 #include "kutlog/detail/integer_power.hpp"
 
 KUTLOG_API_BEGIN
-namespace kutlog {
+namespace kutlog::detail {
 
 // F(t) = scale * P(w), w = 1 - min(t, 1), zero where t <= t_cut.
 struct LobeKernel {
@@ -302,5 +302,15 @@ struct PerLanePowerPolyKernel {
   Coefficients scale{};                            // S, where fitted
 };
 
-}  // namespace kutlog
+// Where a Lobe's kernel runs: SIMD lanes without fused multiply-add (SSE4.1) or with it
+// (AVX2, AVX-512), or the scalar eval(float t) (kutlog/inspect.hpp).
+enum class Arithmetic : std::uint8_t { unfused, fused, scalar };
+
+// The error bound the setup certified for one kernel, in the contract's units
+// (kutlog/inspect.hpp).
+struct KernelCertificate {
+  double abs_error = 0, epicenter_ulp = 0;
+};
+
+}  // namespace kutlog::detail
 KUTLOG_API_END

@@ -26,8 +26,8 @@ inline Batch clamp_zero_to(Batch value, Batch upper) {
 // where a loop measured 6% slower.
 template <class Batch>
 [[gnu::always_inline]] inline Batch horner_to(
-    Batch x, const std::array<Batch, PerLaneKernel::kMaxDegree + 1>& c, int degree) {
-  static_assert(PerLaneKernel::kMaxDegree == 20 && PerLanePowerPolyKernel::kMaxDegree == 20,
+    Batch x, const std::array<Batch, kutlog::detail::PerLaneKernel::kMaxDegree + 1>& c, int degree) {
+  static_assert(kutlog::detail::PerLaneKernel::kMaxDegree == 20 && kutlog::detail::PerLanePowerPolyKernel::kMaxDegree == 20,
                 "one step per degree below");
   if (degree == 0) return c[0];
   if (degree == 1) return mul_add(c[1], x, c[0]);
@@ -53,7 +53,7 @@ enum class LobeFinish { any, plain, split, compensated };
 
 // The finish a kernel runs with on an arch: what PreparedLobe<Arch, kDegree, finish> needs.
 template <class Arch>
-constexpr LobeFinish lobe_finish(const LobeKernel& kernel) {
+constexpr LobeFinish lobe_finish(const kutlog::detail::LobeKernel& kernel) {
   if (has_fused_fma<Arch> && kernel.compensated) return LobeFinish::compensated;
   return kernel.scale_lo != 0 ? LobeFinish::split : LobeFinish::plain;
 }
@@ -68,7 +68,7 @@ class PreparedLobe {
   using D = doubles<Arch>;
 
   // Broadcasts only the coefficients the degree uses: a small span pays for nothing else.
-  explicit PreparedLobe(const LobeKernel& kernel)
+  explicit PreparedLobe(const kutlog::detail::LobeKernel& kernel)
       : kernel_(kernel), t_cut_(kernel.t_cut), center_(kernel.center_t), scale_(kernel.scale_f),
         finish_(kFinish == LobeFinish::any ? lobe_finish<Arch>(kernel) : kFinish) {
     if (finish() != LobeFinish::plain) scale_lo_ = F(kernel.scale_lo);
@@ -80,7 +80,7 @@ class PreparedLobe {
   // GCC would otherwise call it out of line, batches through memory.
   [[gnu::always_inline]] F operator()(F t) const {
     if constexpr (!kClamped) return float_form(t);
-    if (kDegree >= 0 || kernel_.form == LobeKernel::Form::polynomial)
+    if (kDegree >= 0 || kernel_.form == kutlog::detail::LobeKernel::Form::polynomial)
       return detail::clamp_zero_to(float_form(t), scale_);
     return zero_where(t <= t_cut_, detail::clamp_zero_to(double_form(t), scale_));
   }
@@ -149,11 +149,11 @@ class PreparedLobe {
     return narrow(half(halves.hi), half(halves.lo));
   }
 
-  const LobeKernel& kernel_;
+  const kutlog::detail::LobeKernel& kernel_;
   F t_cut_, center_, scale_, scale_lo_;  // scale_lo_ set unless the finish is plain
   LobeFinish finish_;
   // [0, degree] set
-  std::array<F, std::size_t(kDegree >= 0 ? kDegree : LobeKernel::kMaxDegree) + 1> q_;
+  std::array<F, std::size_t(kDegree >= 0 ? kDegree : kutlog::detail::LobeKernel::kMaxDegree) + 1> q_;
 };
 
 // A PerLaneKernel with its constants broadcast once: F(t; n) per lane (kutlog/lobe.hpp).
@@ -163,15 +163,15 @@ class PreparedLobe {
 // branch the line of c^2 cost AVX2 a tenth of its rate); kWClamped must be the kernel's
 // w_clamped or true.
 template <class Arch, Variant kVariant = Variant::precise,
-          PerLaneKernel::Power kPower = PerLaneKernel::Power::in_double, bool kInN = false,
+          kutlog::detail::PerLaneKernel::Power kPower = kutlog::detail::PerLaneKernel::Power::in_double, bool kInN = false,
           bool kWClamped = true>
 class PreparedPerLaneLobe {
  public:
   using F = floats<Arch>;
-  static constexpr int kBaseDegree = kVariant == Variant::fast ? PerLaneKernel::kFastBaseDegree
-                                                               : PerLaneKernel::kPreciseBaseDegree;
+  static constexpr int kBaseDegree = kVariant == Variant::fast ? kutlog::detail::PerLaneKernel::kFastBaseDegree
+                                                               : kutlog::detail::PerLaneKernel::kPreciseBaseDegree;
 
-  PreparedPerLaneLobe(const PerLaneKernel& kernel, bool normalized)
+  PreparedPerLaneLobe(const kutlog::detail::PerLaneKernel& kernel, bool normalized)
       : kernel_(kernel), normalized_(normalized), k_(float(kernel.k)),
         c_squared_slope_(kernel.c_squared_slope), c_squared_slope_lo_(kernel.c_squared_slope_lo),
         coef_n_slope_(kernel.coef_n_slope) {
@@ -207,7 +207,7 @@ class PreparedPerLaneLobe {
     for (int i = kBaseDegree; i-- > 0;) r = mul_add(r, v, r_[std::size_t(i)]);
     // The base is in [0, 1] where v < v_cut: v r >= 0, and the cut's margin exceeds R's error
     // (src/per_lane_lobe.cpp). Its power is too.
-    using Power = PerLaneKernel::Power;
+    using Power = kutlog::detail::PerLaneKernel::Power;
     F value;
     if constexpr (kPower == Power::in_float)
       value = kutlog::detail::integer_power(neg_mul_add(v, r, F(1.0f)), kernel_.k);
@@ -252,9 +252,9 @@ class PreparedPerLaneLobe {
     return narrow(half(v_halves.hi, r_halves.hi), half(v_halves.lo, r_halves.lo));
   }
 
-  using Batches = std::array<F, PerLaneKernel::kMaxDegree + 1>;
+  using Batches = std::array<F, kutlog::detail::PerLaneKernel::kMaxDegree + 1>;
 
-  const PerLaneKernel& kernel_;
+  const kutlog::detail::PerLaneKernel& kernel_;
   bool normalized_;
   F k_, c_squared_slope_, c_squared_slope_lo_, coef_n_slope_;
   Batches h_, coef_k_, g_, r_, coef_n_;
@@ -263,7 +263,7 @@ class PreparedPerLaneLobe {
 // F_kutlog of the lobe whose precomputed kernel is given (Lobe::kernel(variant, normalization,
 // has_fused_fma<Arch>)). For loops, build a PreparedLobe once instead.
 template <class Arch>
-inline floats<Arch> kutlog_lobe(floats<Arch> t, const LobeKernel& kernel) {
+inline floats<Arch> kutlog_lobe(floats<Arch> t, const kutlog::detail::LobeKernel& kernel) {
   return PreparedLobe<Arch>(kernel)(t);
 }
 
@@ -287,7 +287,7 @@ template <class Arch, bool kDecomposed, int kLogDegree, int kExpDegree>
 class PreparedPowerPoly {
  public:
   using F = floats<Arch>;
-  explicit PreparedPowerPoly(const PowerPolyKernel& kernel)
+  explicit PreparedPowerPoly(const kutlog::detail::PowerPolyKernel& kernel)
       : t_zero_(kernel.t_zero), n_(kernel.n) {
     for (std::size_t i = 0; i <= std::size_t(kLogDegree); ++i) log_[i] = F(kernel.log[i]);
     for (std::size_t i = 0; i <= std::size_t(kExpDegree); ++i) exp_[i] = F(kernel.exp[i]);
@@ -329,17 +329,17 @@ class PreparedPowerPoly {
   }
 
   F t_zero_, n_;
-  std::array<F, PowerPolyKernel::kMaxLogDegree + 1> log_;
-  std::array<F, PowerPolyKernel::kPreciseExpDegree + 1> exp_;
+  std::array<F, kutlog::detail::PowerPolyKernel::kMaxLogDegree + 1> log_;
+  std::array<F, kutlog::detail::PowerPolyKernel::kPreciseExpDegree + 1> exp_;
 };
 
 // scale(n) t^n per lane by a PerLanePowerPolyKernel (kutlog/lobe.hpp): kExpDegree and kScale
 // must be the kernel's; the log's and scale's degrees are taken as PerLaneLobe takes its own.
-template <class Arch, int kExpDegree, PerLanePowerPolyKernel::Scale kScale>
+template <class Arch, int kExpDegree, kutlog::detail::PerLanePowerPolyKernel::Scale kScale>
 class PreparedPerLanePowerPoly {
  public:
   using F = floats<Arch>;
-  explicit PreparedPerLanePowerPoly(const PerLanePowerPolyKernel& kernel)
+  explicit PreparedPerLanePowerPoly(const kutlog::detail::PerLanePowerPolyKernel& kernel)
       : kernel_(kernel), scale_slope_(kernel.scale_slope) {
     for (std::size_t i = 0; i < log_.size(); ++i)
       log_[i] = F(kernel.log[i]), scale_[i] = F(kernel.scale[i]);
@@ -358,7 +358,7 @@ class PreparedPerLanePowerPoly {
     const F shifter(0x1.8p23f + 127), shifted = y + shifter, f = y - (shifted - shifter);
     F power = exp_[std::size_t(kExpDegree)];
     for (int i = kExpDegree; i-- > 0;) power = mul_add(power, f, exp_[std::size_t(i)]);
-    using Scale = PerLanePowerPolyKernel::Scale;
+    using Scale = kutlog::detail::PerLanePowerPolyKernel::Scale;
     if constexpr (kScale == Scale::fitted) {
       power *= mul_add(scale_slope_, n_clamped,
                        detail::horner_to(n_clamped, scale_, kernel_.scale_degree));
@@ -374,11 +374,11 @@ class PreparedPerLanePowerPoly {
   }
 
  private:
-  using Batches = std::array<F, PerLanePowerPolyKernel::kMaxDegree + 1>;
-  const PerLanePowerPolyKernel& kernel_;
+  using Batches = std::array<F, kutlog::detail::PerLanePowerPolyKernel::kMaxDegree + 1>;
+  const kutlog::detail::PerLanePowerPolyKernel& kernel_;
   F scale_slope_;
   Batches log_, scale_;
-  std::array<F, PerLanePowerPolyKernel::kPreciseExpDegree + 1> exp_;
+  std::array<F, kutlog::detail::PerLanePowerPolyKernel::kPreciseExpDegree + 1> exp_;
 };
 
 // Schlick's t / (n - n t + t), t clamped to [0, 1].

@@ -77,7 +77,7 @@ struct BandPosition {
   ints<Arch> cell;
   floats<Arch> x;
 };
-template <SamplerCells cells, class Arch>
+template <kutlog::detail::SamplerCells cells, class Arch>
 inline BandPosition<Arch> band_position(floats<Arch> w) {
   using F = floats<Arch>;
   using I = ints<Arch>;
@@ -97,7 +97,7 @@ struct CellPosition {
   floats<Arch> x;
   xsimd::batch_bool<float, Arch> lower;
 };
-template <SamplerCells cells, class Arch>
+template <kutlog::detail::SamplerCells cells, class Arch>
 inline CellPosition<Arch> locate(floats<Arch> u1) {
   using F = floats<Arch>;
   const auto lower = u1 <= F(0.5f);
@@ -170,14 +170,14 @@ class PreparedSampler {
 #else
   static constexpr bool kRaisesPower = false;
 #endif
-  static bool double_power_needed(const SamplerKernel& kernel) {
+  static bool double_power_needed(const kutlog::detail::SamplerKernel& kernel) {
     return kRaisesPower && kernel.k > kFloatPowerMaxK;
   }
 
   using F = floats<Arch>;
   using I = ints<Arch>;
 
-  explicit PreparedSampler(const SamplerKernel& kernel)
+  explicit PreparedSampler(const kutlog::detail::SamplerKernel& kernel)
       : kernel_(kernel), half_c_(0.5f * kernel.c), limit_(kernel.limit),
         peak_(kernel.density_scale) {}
 
@@ -185,7 +185,7 @@ class PreparedSampler {
   // The polar angle theta(u1) of the coarse fit of the inverse CDF, in [0, limit], its
   // coefficients looked up by permutes (one instruction, not 16 loads).
   F polar_angle(F u1) const requires(arch_of<Arch, xsimd::avx512f>) {
-    using K = SamplerKernel;
+    using K = kutlog::detail::SamplerKernel;
     const detail::CellPosition<Arch> at = detail::locate<K::kCoarse>(u1);
     const F p = detail::cell_polynomial(
         kernel_.coarse.data(), kernel_.coarse_degree, K::kCoarseStride, at,
@@ -226,7 +226,7 @@ class PreparedSampler {
   // haversine q = sin^2(theta/2) (over its scale) and the pdf from its two cubics, then
   // cos(theta) = 1 - 2 q and sin(theta) = 2 sqrt(q (1 - q)): no sine of theta and no power.
   SampleBatch<Arch> from_rows(F u1, F u2) const {
-    using K = SamplerKernel;
+    using K = kutlog::detail::SamplerKernel;
     static_assert(K::kRowCells.lower_cells == 0 && K::kRowCells.top_exponent == -1);
     const F u = detail::unit_interval(u1);
     // w = 1 - u rounded below 1/2 (x moves by at most 2^-21); u = 0 gives the last cell's edge.
@@ -272,9 +272,9 @@ class PreparedSampler {
 
   // Each lane's row of SamplerKernel::rows, transposed: coefficient j of every lane in batch
   // j. Whole-row loads and shuffles, where gathers cost a load per lane and coefficient.
-  std::array<F, SamplerKernel::kRowStride> row_coefficients(I cell) const {
+  std::array<F, kutlog::detail::SamplerKernel::kRowStride> row_coefficients(I cell) const {
     constexpr std::size_t N = F::size;
-    constexpr int kRowBytes = SamplerKernel::kRowStride * int(sizeof(float));
+    constexpr int kRowBytes = kutlog::detail::SamplerKernel::kRowStride * int(sizeof(float));
     // Byte offsets, unsigned: each lane's address is then one add, with no sign extension.
     alignas(64) std::uint32_t offsets[N];
     (cell * I(kRowBytes)).store_aligned(reinterpret_cast<std::int32_t*>(offsets));
@@ -287,7 +287,7 @@ class PreparedSampler {
       return reinterpret_cast<const float*>(
           reinterpret_cast<const char*>(kernel_.rows.data()) + offsets[lane]);
     };
-    std::array<F, SamplerKernel::kRowStride> c;
+    std::array<F, kutlog::detail::SamplerKernel::kRowStride> c;
 #if XSIMD_WITH_AVX2
     if constexpr (arch_of<Arch, xsimd::avx2> && N == 8) {
       // An 8x8 transpose: pairs of rows interleaved, then pairs of pairs, then the halves.
@@ -329,7 +329,7 @@ class PreparedSampler {
     return c;
   }
 
-  const SamplerKernel& kernel_;
+  const kutlog::detail::SamplerKernel& kernel_;
   F half_c_, limit_, peak_;
 };
 
@@ -355,7 +355,7 @@ inline float mul_add(float a, float b, float c) {
 // Always the full degree: a fit of lower degree has zeros above it, cheaper than a branch.
 template <class Arch>
 inline float cubic(const float* c, float x) {
-  static_assert(SamplerKernel::kRowDegree == 3);
+  static_assert(kutlog::detail::SamplerKernel::kRowDegree == 3);
   return mul_add<Arch>(x * x, mul_add<Arch>(c[3], x, c[2]), mul_add<Arch>(c[1], x, c[0]));
 }
 
@@ -395,8 +395,8 @@ struct Row {
   const float* coefficients;
   float x;
 };
-inline Row row_of(const SamplerKernel& kernel, float u1) {
-  constexpr SamplerCells kCells = SamplerKernel::kRowCells;
+inline Row row_of(const kutlog::detail::SamplerKernel& kernel, float u1) {
+  constexpr kutlog::detail::SamplerCells kCells = kutlog::detail::SamplerKernel::kRowCells;
   static_assert(kCells.lower_cells == 0 && kCells.top_exponent == -1);
   constexpr int kFractionBits = 23 - kCells.band_bits;
   const auto bits = std::bit_cast<std::uint32_t>(std::min(1.0f - u1, detail::kLargestBelowOne));
@@ -405,11 +405,11 @@ inline Row row_of(const SamplerKernel& kernel, float u1) {
   const float x =
       std::bit_cast<float>(((bits & ((1u << kFractionBits) - 1)) << kCells.band_bits) |
                            0x3f800000u) - 1.5f;
-  return {kernel.rows.data() + cell * SamplerKernel::kRowStride, x};
+  return {kernel.rows.data() + cell * kutlog::detail::SamplerKernel::kRowStride, x};
 }
 
 template <class Arch>
-inline SampledDirection sample(const SamplerKernel& kernel, float u1, float u2) {
+inline SampledDirection sample(const kutlog::detail::SamplerKernel& kernel, float u1, float u2) {
   if (std::isnan(u1) || std::isnan(u2)) {
     constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
     return {kNaN, kNaN, kNaN, kNaN};
@@ -417,7 +417,7 @@ inline SampledDirection sample(const SamplerKernel& kernel, float u1, float u2) 
   u1 = unit_interval(u1);
   const Row row = row_of(kernel, u1);
   const float fitted = cubic<Arch>(row.coefficients, row.x);
-  const float pdf = cubic<Arch>(row.coefficients + SamplerKernel::kRowDegree + 1, row.x);
+  const float pdf = cubic<Arch>(row.coefficients + kutlog::detail::SamplerKernel::kRowDegree + 1, row.x);
   // The fit's weight min(2 u1, 1), exactly 1 above 1/2; the min on the bits (u1 >= 0 orders
   // them as the values), which GCC keeps a cmov where a float min became a branch.
   const float weight = std::bit_cast<float>(

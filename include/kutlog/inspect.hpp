@@ -1,0 +1,110 @@
+// kutlog/inspect.hpp: what a material's setup fitted and certified, for the tests, the tools
+// and users of the kutlog/simd/ templates, who run the fitted kernels in their own batch code.
+// A renderer needs none of it.
+#pragma once
+
+#include "kutlog/api.hpp"
+#include "kutlog/detail/lobe_kernel.hpp"
+#include "kutlog/detail/sampler_kernel.hpp"
+#include "kutlog/dispatch.hpp"
+#include "kutlog/lobe.hpp"
+#include "kutlog/sampling.hpp"
+
+namespace kutlog::detail {
+struct Inspector {
+  static const LobeKernel& kernel(const Lobe& lobe, int index) { return lobe.kernels_[index]; }
+  static const KernelCertificate& certificate(const Lobe& lobe, int index) {
+    return lobe.certificates_[index];
+  }
+  static int index(Variant variant, Normalization normalization, Arithmetic arithmetic) {
+    return Lobe::kernel_index(variant, normalization, arithmetic);
+  }
+  static const ScalarPieces& precise_pieces(const Lobe& lobe, Normalization normalization) {
+    return lobe.precise_pieces_[int(normalization)];
+  }
+  static const FastScalarPieces& fast_pieces(const Lobe& lobe, Normalization normalization) {
+    return lobe.fast_pieces_[int(normalization)];
+  }
+  static double c(const Lobe& lobe) { return lobe.c_; }
+  static const PerLaneKernel& kernel(const PerLaneLobe& lobe, Variant variant) {
+    return lobe.kernels_[int(variant)];
+  }
+  static const SamplerKernel& kernel(const LobeSampler& sampler) { return sampler.kernel_; }
+  static double limit(const LobeSampler& sampler) { return sampler.limit_; }
+  static double fit_error(const LobeSampler& sampler) { return sampler.fit_error_; }
+};
+}  // namespace kutlog::detail
+
+KUTLOG_API_BEGIN
+namespace kutlog::inspect {
+
+// SIMD lanes without fused multiply-add (SSE4.1) or with it (AVX2, AVX-512), or the scalar
+// eval(float t): each Lobe fits and certifies one kernel per arithmetic. The scalar one is
+// fitted only where the variant's certified pieces are empty; elsewhere only its t_cut is set.
+using detail::Arithmetic;
+// A kernel's certified bound in the contract's units: abs_error of the peak, and ulps where
+// F >= 0.6. At most the variant's promise; where the support holds no float below 1, the
+// promise.
+using detail::KernelCertificate;
+// The fitted kernels, plain data: kutlog/simd/lobe.hpp and kutlog/simd/sampling.hpp run them.
+using detail::FastScalarPieces;
+using detail::LobeKernel;
+using detail::PerLaneKernel;
+using detail::SamplerCells;
+using detail::SamplerKernel;
+using detail::ScalarPieces;
+
+// The kernel a Lobe fitted for that arithmetic (fused_fma: simd::has_fused_fma<Arch>).
+inline const LobeKernel& kernel(const Lobe& lobe, Variant variant, Normalization normalization,
+                                Arithmetic arithmetic) noexcept {
+  return detail::Inspector::kernel(lobe,
+                                   detail::Inspector::index(variant, normalization, arithmetic));
+}
+inline const LobeKernel& kernel(const Lobe& lobe, Variant variant, Normalization normalization,
+                                bool fused_fma) noexcept {
+  return kernel(lobe, variant, normalization,
+                fused_fma ? Arithmetic::fused : Arithmetic::unfused);
+}
+// The bound the setup certified for that kernel; for Arithmetic::scalar, for whichever of the
+// pieces and the kernel eval(float t) runs.
+inline const KernelCertificate& certificate(const Lobe& lobe, Variant variant,
+                                            Normalization normalization, Arithmetic arithmetic) {
+  return detail::Inspector::certificate(
+      lobe, detail::Inspector::index(variant, normalization, arithmetic));
+}
+// The scalar eval's certified pieces; empty where it runs the kernel of Arithmetic::scalar.
+inline const ScalarPieces& precise_pieces(const Lobe& lobe, Normalization normalization) {
+  return detail::Inspector::precise_pieces(lobe, normalization);
+}
+inline const FastScalarPieces& fast_pieces(const Lobe& lobe, Normalization normalization) {
+  return detail::Inspector::fast_pieces(lobe, normalization);
+}
+// The model's angle scale c = acos(Q^(1/k)) / acos(Q^(1/n)).
+inline double c(const Lobe& lobe) { return detail::Inspector::c(lobe); }
+
+inline const PerLaneKernel& kernel(const PerLaneLobe& lobe, Variant variant = Variant::precise) {
+  return detail::Inspector::kernel(lobe, variant);
+}
+
+inline const SamplerKernel& kernel(const LobeSampler& sampler) {
+  return detail::Inspector::kernel(sampler);
+}
+// The polar angle's support G = min(pi / (2c), pi/2).
+inline double limit(const LobeSampler& sampler) { return detail::Inspector::limit(sampler); }
+// The largest fit error the setup saw: theta's in units of G, sin^2(theta/2)'s of its top,
+// the pdf's of the peak pdf.
+inline double fit_error(const LobeSampler& sampler) {
+  return detail::Inspector::fit_error(sampler);
+}
+
+// force_arch(arch) for a scope, then reset_arch(): the tests' and tools' way to run each arch.
+class ScopedArch {
+ public:
+  explicit ScopedArch(Arch arch) { force_arch(arch); }
+  ~ScopedArch() { reset_arch(); }
+  ScopedArch(const ScopedArch&) = delete;
+  ScopedArch& operator=(const ScopedArch&) = delete;
+};
+
+}  // namespace kutlog::inspect
+KUTLOG_API_END
