@@ -58,11 +58,19 @@ void register_scalar_benchmarks() {
   const auto add = [](const char* name, auto function, std::vector<float> x) {
     register_scalar_unary(name, function, std::move(x));
   };
-  add("math/acos/std/arch:scalar", [](float x) { return std::acos(x); }, uniform_inputs(-1, 1));
-  add("math/cos/std/arch:scalar", [](float x) { return std::cos(x); }, uniform_inputs(-3.14159f, 3.14159f));
-  add("math/exp/std/arch:scalar", [](float x) { return std::exp(x); }, uniform_inputs(-80, 80));
-  add("math/log/std/arch:scalar", [](float x) { return std::log(x); }, uniform_inputs(1e-3f, 1e3f));
-  add("math/pow/std/arch:scalar", [](float x) { return std::pow(x, 1000.0f); }, uniform_inputs(0, 1));
+  // Each math kernel's std:: peer on the kernel's benchmark inputs, from the one list.
+#define KUTLOG_STD_UNARY(function, kernel, promised, x86, arm, domain, lo, hi, peer, bench_lo, \
+                         bench_hi)                                                             \
+  add("math/" #function "/std/arch:scalar", [](float x) { return std::peer(x); },              \
+      uniform_inputs(bench_lo, bench_hi));
+#define KUTLOG_STD_BINARY(function, kernel, promised, x86, arm, domain, lo, hi, peer, bench_lo, \
+                          bench_hi)                                                             \
+  add("math/" #function "/std/arch:scalar", [](float x) { return std::peer(x, 1000.0f); },      \
+      uniform_inputs(bench_lo, bench_hi));
+  KUTLOG_UNARY_MATH_FUNCTIONS(KUTLOG_STD_UNARY)
+  KUTLOG_BINARY_MATH_FUNCTIONS(KUTLOG_STD_BINARY)
+#undef KUTLOG_STD_UNARY
+#undef KUTLOG_STD_BINARY
   register_fragment_benchmarks("");
 #ifdef KUTLOG_BENCH_NATIVE
   register_native_fragment_benchmarks();

@@ -12,6 +12,7 @@
 #include "common/guarded_output.hpp"
 #include "expect_invalid.hpp"
 #include "kutlog/baselines.hpp"
+#include "kutlog/detail/math_functions.hpp"
 #include "kutlog/dispatch.hpp"
 #include "kutlog/inspect.hpp"
 #include "kutlog/lobe.hpp"
@@ -109,27 +110,22 @@ const PerLaneLobe& empty_test_per_lane_lobe() {
 }
 template <typename Call>
 void for_every_kernel(const Call& call) {
-  call("acos_u10", [](const float* in, float* out, std::size_t count) {
-    math::acos_u10(in, out, count);
+  // Every math kernel of the one list (kutlog/detail/math_functions.hpp), so none escapes.
+#define KUTLOG_CALL_UNARY(function, kernel, ...)                           \
+  call(#kernel, [](const float* in, float* out, std::size_t count) {       \
+    math::kernel(in, out, count);                                          \
   });
-  call("cos_u10", [](const float* in, float* out, std::size_t count) {
-    math::cos_u10(in, out, count);
+#define KUTLOG_CALL_BINARY(function, kernel, ...)                          \
+  call(#kernel, [](const float* in, float* out, std::size_t count) {       \
+    math::kernel(in, in, out, count);                                      \
+  });                                                                      \
+  call(#kernel " scalar y", [](const float* in, float* out, std::size_t count) { \
+    math::kernel(in, 2.0f, out, count);                                    \
   });
-  call("cos_halfpi_u10", [](const float* in, float* out, std::size_t count) {
-    math::cos_halfpi_u10(in, out, count);
-  });
-  call("exp_u10", [](const float* in, float* out, std::size_t count) {
-    math::exp_u10(in, out, count);
-  });
-  call("log_u10", [](const float* in, float* out, std::size_t count) {
-    math::log_u10(in, out, count);
-  });
-  call("pow_u10", [](const float* in, float* out, std::size_t count) {
-    math::pow_u10(in, in, out, count);
-  });
-  call("pow_u10 scalar y", [](const float* in, float* out, std::size_t count) {
-    math::pow_u10(in, 2.0f, out, count);
-  });
+  KUTLOG_UNARY_MATH_FUNCTIONS(KUTLOG_CALL_UNARY)
+  KUTLOG_BINARY_MATH_FUNCTIONS(KUTLOG_CALL_BINARY)
+#undef KUTLOG_CALL_UNARY
+#undef KUTLOG_CALL_BINARY
   call("Lobe::eval", [](const float* in, float* out, std::size_t count) {
     empty_test_lobe().eval(in, out, count);
   });
