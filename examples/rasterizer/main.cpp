@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <kutlog/baselines.hpp>
 #include <kutlog/lobe.hpp>
 #include <kutlog/shade.hpp>
 #include <optional>
