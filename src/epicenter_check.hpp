@@ -8,7 +8,7 @@
 // arch of its kind computes: fused multiply-adds, or products and sums rounded one at a time,
 // in the same order, subtractions and clamps; kutlog compiles its kernels with
 // -ffp-contract=off. (A caller who inlines kutlog/simd/lobe.hpp and lets the compiler fuse an
-// unfused kernel's products runs other bits: docs/api-notes.md, KernelCertificate.)
+// unfused kernel's products runs other bits: kutlog/inspect.hpp, KernelCertificate.)
 #pragma once
 
 #include <optional>

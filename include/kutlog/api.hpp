@@ -1,6 +1,9 @@
-// kutlog/api.hpp: KUTLOG_API_BEGIN/END give the public headers' declarations default
-// visibility; the shared library hides everything else (-fvisibility=hidden). Also declares
-// detail::Inspector, the one friend of the public classes.
+// kutlog/api.hpp: what the library exports. Every public header of include/kutlog wraps its
+// declarations in KUTLOG_API_BEGIN / KUTLOG_API_END, which give them default visibility; the
+// shared library (CMake's BUILD_SHARED_LIBS) is compiled with -fvisibility=hidden, so that
+// nothing else it contains (the setup's internals, the per-arch kernels) is exported or can
+// clash with a symbol of the program that loads it. Also declares detail::Inspector, the one
+// friend of the public classes.
 #pragma once
 
 #if __cplusplus < 202002L

@@ -38,15 +38,27 @@ struct Inspector {
 KUTLOG_API_BEGIN
 namespace kutlog::inspect {
 
-// SIMD lanes without fused multiply-add (SSE4.1) or with it (AVX2, AVX-512), or the scalar
-// eval(float t): each Lobe fits and certifies one kernel per arithmetic. The scalar one is
-// fitted only where the variant's certified pieces are empty; elsewhere only its t_cut is set.
+// Where a kernel's arithmetic runs; every Lobe fits and certifies one kernel for each: SIMD
+// lanes without fused multiply-add (unfused: SSE4.1, portable) or with it (fused: AVX2,
+// AVX-512, NEON), or the scalar eval(float t). The scalar eval runs the variant's certified
+// pieces (precise: a cubic in double rounded once to float, which no compiler flag (FMA,
+// -ffp-contract) moves by more than that rounding; fast: a quadratic in float, bounded for any
+// fusing); where those are not certified (their table empty), the LobeKernel of
+// Arithmetic::scalar, in double, or in float where the bound of unfused arithmetic (which
+// covers any fusing) meets the promise. That kernel is fitted only there; elsewhere only its
+// t_cut is set. certificate(lobe, variant, normalization, Arithmetic::scalar) is the bound of
+// whichever runs.
 using detail::Arithmetic;
-// A kernel's certified bound in the contract's units: abs_error of the peak, and ulps where
-// F >= 0.6. At most the variant's promise; where the support holds no float below 1, the
-// promise.
+// The error bound the setup certified for one kernel, in the contract's units
+// (src/lobe_bound.hpp): abs_error relative to the peak, epicenter_ulp in ulps of scale F where
+// F >= 0.6. At most the variant's promise; for a SIMD kernel accepted by its run over every float
+// of the epicenter, epicenter_ulp may be up to twice the promise, the run's own measure being
+// within it. That run holds for the bits kutlog's kernels compute: a caller who inlines
+// kutlog/simd/lobe.hpp keeps it only with an unfused kernel left unfused (-ffp-contract=off).
+// Where the support holds no float below 1 (nothing to fit), the promise.
 using detail::KernelCertificate;
-// The fitted kernels, plain data: kutlog/simd/lobe.hpp and kutlog/simd/sampling.hpp run them.
+// The fitted kernels, plain data (kutlog/detail/lobe_kernel.hpp, sampler_kernel.hpp):
+// kutlog/simd/lobe.hpp and kutlog/simd/sampling.hpp run them.
 using detail::FastScalarPieces;
 using detail::LobeKernel;
 using detail::PerLaneKernel;
@@ -54,7 +66,10 @@ using detail::SamplerCells;
 using detail::SamplerKernel;
 using detail::ScalarPieces;
 
-// The kernel a Lobe fitted for that arithmetic (fused_fma: simd::has_fused_fma<Arch>).
+// The kernel a Lobe fitted for that variant, normalization and arithmetic, for users who inline
+// kutlog/simd/lobe.hpp (simd::kutlog_lobe, simd::PreparedLobe): each was fitted and checked for
+// the arithmetic it runs on, so pass fused_fma = simd::has_fused_fma<Arch> for the batches' arch.
+// Valid as long as the Lobe; no throw.
 inline const LobeKernel& kernel(const Lobe& lobe, Variant variant, Normalization normalization,
                                 Arithmetic arithmetic) noexcept {
   return detail::Inspector::kernel(lobe,
@@ -65,14 +80,15 @@ inline const LobeKernel& kernel(const Lobe& lobe, Variant variant, Normalization
   return kernel(lobe, variant, normalization,
                 fused_fma ? Arithmetic::fused : Arithmetic::unfused);
 }
-// The bound the setup certified for that kernel; for Arithmetic::scalar, for whichever of the
-// pieces and the kernel eval(float t) runs.
+// The bound the setup certified for that kernel (KernelCertificate); for Arithmetic::scalar,
+// for whichever of the pieces and the kernel eval(float t) runs.
 inline const KernelCertificate& certificate(const Lobe& lobe, Variant variant,
                                             Normalization normalization, Arithmetic arithmetic) {
   return detail::Inspector::certificate(
       lobe, detail::Inspector::index(variant, normalization, arithmetic));
 }
-// The scalar eval's certified pieces; empty where it runs the kernel of Arithmetic::scalar.
+// The scalar eval's certified pieces, precise and fast (ScalarPieces, FastScalarPieces); their
+// table is empty where eval(float t) runs the kernel of Arithmetic::scalar.
 inline const ScalarPieces& precise_pieces(const Lobe& lobe, Normalization normalization) {
   return detail::Inspector::precise_pieces(lobe, normalization);
 }
@@ -82,10 +98,12 @@ inline const FastScalarPieces& fast_pieces(const Lobe& lobe, Normalization norma
 // The model's angle scale c = acos(Q^(1/k)) / acos(Q^(1/n)).
 inline double c(const Lobe& lobe) { return detail::Inspector::c(lobe); }
 
+// PerLaneLobe's fitted kernel for a variant, for simd::PreparedPerLaneLobe.
 inline const PerLaneKernel& kernel(const PerLaneLobe& lobe, Variant variant = Variant::precise) {
   return detail::Inspector::kernel(lobe, variant);
 }
 
+// LobeSampler's fitted tables, for simd::PreparedSampler and simd::one_sample::sample.
 inline const SamplerKernel& kernel(const LobeSampler& sampler) {
   return detail::Inspector::kernel(sampler);
 }

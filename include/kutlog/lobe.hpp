@@ -25,36 +25,41 @@ enum class Normalization : std::uint8_t { none, exact_coef };
 // normalized, else 1): 0 <= out <= peak (the output at t = 1); precise within 2^-22 scale and
 // 2 ulps where F >= 0.6; fast within 2^-16 scale (kLobeBounds, kutlog/accuracy.hpp).
 // Data rule: t > 1 (rounding of normalized vectors) gives the peak, t <= t_cut() (so t <= 0)
-// gives 0, NaN gives NaN. Thread-safe (const); no eval allocates or throws.
+// gives 0, NaN gives NaN. Thread-safe (const); no eval allocates or throws (docs/accuracy.md).
 class Lobe {
  public:
   // n finite and > 0 (any real) with coef_exact() <= FLT_MAX, k in [1, 64], Q in (0, 1):
   // std::invalid_argument naming the parameter and its range otherwise (for n = 0, a flat or
-  // absent specular, shade with a constant instead); std::runtime_error on a CPU that runs
-  // no compiled arch. Tens of microseconds: once per material, not per fragment.
+  // absent specular, shade with a constant instead). std::runtime_error on a CPU that runs no
+  // compiled arch (never an illegal instruction), or where no kernel meets its variant's bound
+  // (seen on no lobe tried). Tens of microseconds: once per material, not per fragment.
   Lobe(double n, int k, double Q);
-  // k of an integer type only: Lobe(50, 0.5, 3)'s swapped arguments do not compile.
+  // k of an integer type only: Lobe(50, 0.5, 3)'s swapped arguments, or k = 2.5, do not compile
+  // rather than be truncated.
   template <class N, class K, class Anchor>
     requires(!std::is_integral_v<K>)
   Lobe(N, K, Anchor) = delete;
 
+  // The parameters as given.
   double n() const { return n_; }
   int k() const { return k_; }
   double Q() const { return Q_; }
-  // The angle past which F is 0, pi / (2c), at most pi/2.
+  // pi / (2c), the angle past which F is 0; above pi/2 for n < k, where the horizon cuts first.
   double cutoff_angle() const { return cutoff_angle_; }
   // 1 / (2 pi integral of F cos sin over the hemisphere): exact_coef's scale.
   double coef_exact() const { return coef_exact_; }
-  // The largest float at or below cos(cutoff_angle()): every eval(t <= t_cut()) is 0. eval
+  // The largest float at or below cos(min(cutoff_angle(), pi/2)): eval(t <= t_cut()) is 0. eval
   // selects past the cut, never branches there (random order costs no misprediction); a
   // caller whose fragments past the cut come in runs, as a rasterizer's, may skip them on a
   // branch of its own.
   float t_cut() const { return t_cut_; }
 
-  // One fragment, where pow(max(t, 0), n) was: inline, no dispatch, no branch on t. A
-  // polynomial from the setup's certified table of pieces, or where the setup could not
-  // certify them (lobes cut at the horizon, high k), the scalar kernel out of line. The
-  // contract holds whatever the caller's flags (FMA, -ffp-contract).
+  // One fragment, where pow(max(t, 0), n) was: F(t), or coef_exact() F(t), with the arrays'
+  // contract whatever the caller's flags (FMA, -ffp-contract). Inline, no dispatch, no branch on
+  // t: a polynomial from the setup's certified pieces, or where the setup could not certify
+  // them (lobes cut at the horizon, high k) the scalar kernel, called out of line behind a
+  // predicted branch that the compiler can hoist out of a fragment loop. Always inlined: GCC
+  // would call it out of line for its size, the kernel's index then computed per call.
   [[gnu::always_inline]] float eval(float t, Variant variant = Variant::precise,
                                     Normalization normalization = Normalization::none) const
       noexcept {
@@ -67,14 +72,17 @@ class Lobe {
     }
     return eval_by_kernel(t, variant, normalization);
   }
-  // Floats only: a double t near 1 would be rounded without a word; write eval(float(t)).
+  // Floats only, as the kernels take: a double (or an integer) would be rounded here without a
+  // word, and near t = 1, where a narrow lobe lives, the rounding moves 1 - t by far more than
+  // a double's error. Write eval(float(t)).
   template <class T>
     requires(std::is_arithmetic_v<T> && !std::is_same_v<T, float>)
   float eval(T, Variant = Variant::precise, Normalization = Normalization::none) const = delete;
 
-  // out[i] = F(t[i]) (or coef_exact() F), on the active arch (kutlog/dispatch.hpp). Any count
-  // and alignment; out may equal t, else no overlap. Inline up to one indirect call, so that
-  // constant arguments fold the kernel's index.
+  // out[i] = F(t[i]) (or coef_exact() F), on the active arch (kutlog/dispatch.hpp), with the
+  // class's contract. Any count and alignment; out may equal t, else no overlap. Inline up to
+  // one indirect call of the active arch's loop for this kernel, so that a call site's constant
+  // variant and normalization fold the kernel's index.
   void eval(const float* t, float* out, std::size_t count, Variant variant = Variant::precise,
             Normalization normalization = Normalization::none) const noexcept {
     const detail::LobeArrayKernels* loops =
@@ -105,39 +113,48 @@ class Lobe {
   detail::FastScalarPieces fast_pieces_[2];
   detail::LobeKernel kernels_[2 * 2 * 3];  // by kernel_index
   detail::KernelCertificate certificates_[2 * 2 * 3];
-  // Each kernel's slot in detail::LobeArrayKernels, computed at setup.
+  // Each SIMD kernel's slot in detail::LobeArrayKernels, computed at setup: a call reads it
+  // instead of testing the kernel's form, degree and finish.
   std::uint8_t array_slots_[2 * 2 * 3] = {};
 };
 
-// A lobe whose n varies per lane (a glossiness map), k and Q per material: c and coef_exact
-// computed per lane from polynomials fitted over [n_min, n_max] at setup; a lane's n outside
-// it is clamped to it. Contract as Lobe's, with the bounds of kLobeBounds' per_lane rows
-// (precise within 2^-20 scale, fast 2^-16), the peak within kPerLanePeakError of
-// coef_exact(n) normalized, exactly 1 otherwise; past the cut-off exactly 0. Data rule as
-// Lobe's; NaN t or n gives NaN. One fragment at a time a map of 8-bit levels is faster as
-// one Lobe per level.
+// A lobe whose n varies per lane (a glossiness map), k and Q per material: c and coef_exact are
+// computed per lane, in SIMD, from polynomials in 1/n fitted over [n_min, n_max] at setup; a
+// lane's n outside it is clamped to it. Contract, every eval on every arch, against the exact
+// scale F (scale: 1, or the lane's coef_exact(n) when normalized): 0 <= out <= the lane's peak,
+// its output at t = 1, exactly 1 unnormalized and within kPerLanePeakError (fast:
+// kPerLaneFastPeakError) of coef_exact(n) normalized; |out - scale F| <= 2^-20 scale precise,
+// 2^-16 scale fast (kLobeBounds' per_lane rows); no promise in ulps. Past the cut-off exactly
+// 0. Data rule as Lobe's; NaN t or n gives NaN. Thread-safe (const); no eval allocates or
+// throws. One fragment at a time, a map of 8-bit levels is faster as one Lobe per level.
 class PerLaneLobe {
  public:
   // k <= n_min <= n_max <= FLT_MAX (the lanes' n are floats), k in [1, 64], Q in (0, 1):
   // std::invalid_argument naming the parameter and its range otherwise, also for a range too
-  // wide for one fit (tiny Q with n over many decades: split it).
+  // wide for one fit in 1/n (tiny Q with n over many decades, as Q = 1e-300 with n in
+  // [1, 10^38]: split it). std::runtime_error on a CPU that runs no compiled arch.
   PerLaneLobe(double n_min, double n_max, int k, double Q);
+  // k of an integer type only, as Lobe's.
   template <class N1, class N2, class K, class Anchor>
     requires(!std::is_integral_v<K>)
   PerLaneLobe(N1, N2, K, Anchor) = delete;
 
+  // The parameters as given.
   int k() const { return k_; }
   double Q() const { return Q_; }
-  // One fragment: the variant's fits in double, branch-free, rounded once.
+  // One fragment: the SIMD kernel's formulas in double for either variant, branch-free, rounded
+  // once; near powf's speed at that n (docs/benchmarks.md).
   float eval(float t, float n, Variant variant = Variant::precise,
              Normalization normalization = Normalization::none) const noexcept {
     return kernels_[int(variant)].evaluate(t, n, normalization == Normalization::exact_coef);
   }
+  // Floats only, as Lobe's scalar eval.
   template <class T, class N>
     requires(std::is_arithmetic_v<T> && std::is_arithmetic_v<N> &&
              !(std::is_same_v<T, float> && std::is_same_v<N, float>))
   float eval(T, N, Variant = Variant::precise, Normalization = Normalization::none) const = delete;
-  // out[i] = F(t[i]) at n[i], on the active arch; any count and alignment.
+  // out[i] = F(t[i]) at n[i], on the active arch. Any count and alignment; out may equal t or n,
+  // else no overlap.
   void eval(const float* t, const float* n, float* out, std::size_t count,
             Variant variant = Variant::precise,
             Normalization normalization = Normalization::none) const noexcept;

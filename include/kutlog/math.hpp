@@ -1,6 +1,11 @@
 // kutlog/math.hpp: the kernels of kutlog/simd/math.hpp (listed in
-// kutlog/detail/math_functions.hpp) over arrays, dispatched at run time, with their contracts.
-// Any count and alignment; out may equal an input, else no overlap.
+// kutlog/detail/math_functions.hpp) over arrays, dispatched at run time to the active arch
+// (kutlog/dispatch.hpp). Contracts (domain, bound, special values) are those of the kernel of
+// the same name in kutlog/simd/math.hpp, bounds in kutlog/accuracy.hpp. Any count and alignment:
+// the tail is one batch whose lanes past count hold 0.5, moved without touching memory outside
+// [0, count) (src/arch/partial_batches.hpp). out may equal an input (in place), else no
+// overlap. Thread-safe, no allocation; std::runtime_error only on a CPU that runs no compiled
+// arch.
 #pragma once
 
 #include <cstddef>

@@ -14,7 +14,8 @@ namespace kutlog {
 
 // What is sampled. microfacet: half vectors wm about the normal N (z), pdf D(wm) cos(theta_m)
 // with D = coef_exact F(N.wm). phong: directions w about the mirror direction R (z), pdf
-// F(R.w) / (2 pi J). Rotating into the shading frame and reflecting are the caller's.
+// F(R.w) / (2 pi J). Rotating into the shading frame and reflecting are the caller's
+// (ref::KutlogMicrofacet::reflect says how).
 enum class LobeUse { microfacet, phong };
 
 // Where LobeSampler::sample writes: direction (x, y, z) in the use's frame and its pdf over
@@ -32,16 +33,21 @@ struct SampledDirection {
 };
 
 // Draws directions from the normalized lobe of Lobe(n, k, Q), by its polar angle's inverse CDF
-// fitted once per material (about a millisecond) and a uniform azimuth: no pow per sample.
-// Contract on every arch, theta the returned direction's angle from z, G the lobe's support:
+// fitted once per material (about a millisecond at the median, `kutlog-bench --kutlog_setup`),
+// each fit checked against ref::PolarAngleDistribution::inverse_cdf, and a uniform azimuth: no
+// pow per sample (method: docs/design.md). Contract on every arch (tests/test_lobe_sampler.cpp),
+// theta the returned direction's angle from z, G the lobe's support
+// (ref::KutlogLobe::integration_limit(): gran, or pi/2 for n < k):
 //   |theta - inverse_cdf(u1)| <= kSamplerBound.theta_error * G;
-//   |pdf - pdf(direction)| <= kSamplerBound.pdf_error * peak (the pdf at theta = 0);
+//   |pdf - pdf_ref(direction)| <= kSamplerBound.pdf_error * peak, peak the pdf at theta = 0,
+//     pdf_ref the reference's solid-angle density of the returned direction;
 //   the azimuth within kSamplerBound.phi_error radians of 2 pi u2;
 //   0 <= pdf <= peak, z >= 0, |direction| = 1 within a few float roundings.
-// (The angles' bounds hold where x and y are normal floats: for lobes near the top of n's
-// domain and u1 below about 2^-60 they are subnormal.)
+// The angles' bounds hold where x and y are normal floats: for lobes near the top of n's domain
+// (G near 1e-19) and u1 below about 2^-60 they are subnormal, and their spacing alone moves the
+// azimuth by more than the bound (the other properties still hold).
 // Data rule: u1 and u2 below 0 count as 0, at or above 1 as the float below 1; NaN in either
-// gives NaN in every output of that sample. Thread-safe; no allocation per call.
+// gives NaN in every output of that sample. Thread-safe (const); no allocation per call.
 class LobeSampler {
  public:
   // n finite and > 0 with the peak pdf within FLT_MAX (n up to about 10^37), k in [1, 64],
@@ -53,6 +59,7 @@ class LobeSampler {
     requires(!std::is_integral_v<K>)
   LobeSampler(N, K, Anchor, LobeUse) = delete;
 
+  // The parameters as given.
   double n() const { return n_; }
   int k() const { return kernel_.k; }
   double Q() const { return Q_; }
@@ -63,7 +70,10 @@ class LobeSampler {
   void sample(const float* u1, const float* u2, DirectionSamples out,
               std::size_t count) const noexcept;
 
-  // One sample (a path tracer's bounce), scalar float code with the arrays' contract.
+  // One sample, a path tracer's one per bounce: scalar float code from per-cell fits of
+  // sin^2(theta/2) and of the pdf, compiled per arch for its fused multiply-add and dispatched
+  // out of line (the caller's flags do not reach it), with the arrays' contract and data rule,
+  // asserted per arch by the same tests. For many samples at once the array call is faster.
   SampledDirection sample(float u1, float u2) const noexcept;
   // Floats only: a double u1 just below 1 would round to 1 without a word.
   template <class U1, class U2>

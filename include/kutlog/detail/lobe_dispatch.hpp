@@ -12,8 +12,15 @@ KUTLOG_API_BEGIN
 namespace kutlog {
 
 namespace detail {
-// One arch's lobe loops, by slot: per degree and finish, unrolled; the last for any kernel.
+// One array loop of a lobe kernel: out[i] = F(t[i]) over count floats.
 using LobeArrayKernel = void (*)(const LobeKernel&, const float*, float*, std::size_t);
+// One arch's lobe loops, by slot: for the polynomial form of each degree up to
+// kMaxUnrolledDegree, one per finish (plain, split, compensated: simd::LobeFinish), then plain
+// and split without the clamp (LobeKernel::clamped; compensated kernels keep it), unrolled and
+// testing no flag; in the last slot, one for any kernel. A Lobe computes its kernels' slots at
+// setup, so that a call picks its loop with one load. FMA-less archs are never given a
+// compensated kernel: Lobe keeps those for Arithmetic::fused. Filled per arch by
+// src/arch/lobe_loops.hpp; here because Lobe's array eval reads it inline.
 struct LobeArrayKernels {
   static constexpr int kMaxUnrolledDegree = 16;
   static constexpr int kSlotsPerDegree = 5;

@@ -1,5 +1,7 @@
-// kutlog/detail/lobe_kernel.hpp: what the kernels need of one material, precomputed by the
-// classes of kutlog/lobe.hpp, and the scalar evaluators. Method: docs/design.md.
+// kutlog/detail/lobe_kernel.hpp: what the kernels need of one material, precomputed by Lobe and
+// PerLaneLobe (kutlog/lobe.hpp), PowerPoly and PerLanePowerPoly (kutlog/baselines.hpp), with the
+// scalar evaluators: plain data, read by kutlog/simd/lobe.hpp and the array kernels, shown by
+// kutlog/inspect.hpp. Method: docs/design.md.
 #pragma once
 
 #include <algorithm>
@@ -15,7 +17,8 @@
 KUTLOG_API_BEGIN
 namespace kutlog::detail {
 
-// F(t) = scale * P(w), w = 1 - min(t, 1), zero where t <= t_cut.
+// F(t) = scale * P(w), w = 1 - min(t, 1), zero where t <= t_cut: one of a Lobe's kernels, by
+// variant, normalization and Arithmetic (inspect::kernel).
 struct LobeKernel {
   static constexpr int kMaxDegree = 24;
   static constexpr int kMaxUnrolledDegree = 12;  // the scalar path's: past it a loop
@@ -29,11 +32,20 @@ struct LobeKernel {
   float t_cut = 0;
   float center_t = 1;  // polynomial: q's powers are of center_t - t, at or above the cut
   float scale_f = 1;
-  // scale - scale_f: added before the peak, so that scale_f's rounding does not count whole.
+  // scale - scale_f, as a float. Where it is not 0 (normalized lobes) the SIMD polynomial form
+  // ends in scale_f + (scale_lo - w q), so that scale_f's rounding does not count whole where
+  // the output sits in a lower binade than the peak.
   float scale_lo = 0;
-  // FMA only: q's last Horner step kept exact as a pair (for a 2 ULP normalized epicenter).
+  // SIMD polynomial form, FMA archs only: q's last Horner step q_0 + s r kept exact as a pair
+  // (two_product, two_sum), and - w q applied to both halves before scale_f is added. That
+  // step's rounding, about one ulp of q, is what keeps a normalized lobe's epicenter from a
+  // certified 2 ULP where its output sits a binade below the peak.
   bool compensated = false;
-  // Whether the output is clamped to [0, scale_f]; dropped where the setup proves it needless.
+  // SIMD polynomial form: whether the output is clamped to [0, scale_f]. The setup drops the
+  // clamp (two of about fifteen operations) where it proves the output within it: q computed
+  // >= 0 keeps scale_f - w q at most the peak, and t_cut is raised to the last float where F is
+  // below the kernel's certified error, past which the output cannot be negative (at or below
+  // it, 0 is within the promise). Compensated kernels keep it.
   bool clamped = true;
   // The scalar path where its pieces are not certified: in float on q_f where its bound
   // allows, else in double.
@@ -47,9 +59,11 @@ struct LobeKernel {
   std::array<float, kMaxDegree + 1> q_f{};
   std::array<double, kMaxDegree + 1> q_d{};
 
-  // The scalar path's value before its rounding to float, with w times gate (1, or 0 past the
-  // cut, where the value is then scale). Always inlined, as evaluate: GCC would call them for
-  // their size.
+  // The scalar path in double: the value before its one rounding to float, with w multiplied by
+  // gate (1 inside the lobe; 0 past the cut, where the value is then scale_d exactly).
+  // Meaningful for t > t_cut; finite elsewhere in [-1, 1], NaN for NaN. Always inlined, as
+  // in_float and evaluate: GCC would call them for their size, and a call costs a fragment loop
+  // a fifth of its time.
   [[gnu::always_inline]] double unrounded(float t, double gate) const noexcept {
     // A float min (minss), where the double select was a branch; NaN kept.
     const double t_capped = double(std::min(t, 1.0f)), w = (1.0 - t_capped) * gate;
@@ -58,7 +72,11 @@ struct LobeKernel {
                     [&](double q) { return scale_d * detail::integer_power(1.0 - w * q, k); });
     return with_q(center_d - t_capped, q_d, [&](double q) { return scale_d - w * q; });
   }
-  // Either form in float, by Estrin's scheme (the polynomial form as the SIMD float lanes).
+  // The scalar path in float (scalar_in_float), on q_f by the same Estrin's scheme: the
+  // polynomial form scale_f - (w gate) q(s), or the base_power form
+  // scale_f (1 - (w gate) q(w))^k, its bound certified for products rounded or fused. Where it
+  // meets the target (the fast variant, mostly) it runs a third faster than the double form of
+  // the same degree: no conversions, shorter latencies.
   [[gnu::always_inline]] float in_float(float t, float gate) const noexcept {
     const float t_capped = std::min(t, 1.0f), w = (1.0f - t_capped) * gate;
     if (form == Form::base_power)
@@ -66,10 +84,15 @@ struct LobeKernel {
                     [&](float q) { return scale_f * detail::integer_power(1.0f - w * q, k); });
     return with_q(center_t - t_capped, q_f, [&](float q) { return scale_f - w * q; });
   }
-  // Branch-free, so that fragments in random order cost what they cost inside the lobe: past
-  // the cut the polynomial runs at t_cut with w gated to 0, its value scale, and the ceiling
-  // takes it to 0. Masks in integers, since GCC turns float selects and clamps into branches;
-  // w's gate is off the polynomial's chain of dependent operations.
+  // F(t) by the scalar path, for a Lobe whose scalar pieces are not certified: 0 at or below
+  // t_cut, NaN for NaN, else in_float(t, 1) or unrounded(t, 1) rounded, clamped to
+  // [0, scale_f]. Branch-free: over fragments in random order (half past the cut) a branch
+  // mispredicts every other call and costs more than the polynomial; the select costs the
+  // lobe's inside about a fifth. The polynomial runs at max(t, t_cut); past the cut its w is
+  // gated to 0 (the value is scale, never negative) and the clamp's ceiling to 0, both by one
+  // bit mask of t > t_cut, off the polynomial's chain of dependent operations, so that the
+  // clamp's own compare, which GCC compiles to a branch, is taken only inside the lobe near its
+  // cut. Masks in integers: GCC turns float selects into branches.
   [[gnu::always_inline]] float evaluate(float t) const noexcept {
     const bool inside = t > t_cut;  // false for NaN
     const std::uint32_t mask = -std::uint32_t(inside);
@@ -84,7 +107,11 @@ struct LobeKernel {
   }
 
  private:
-  // finish(q(x)) by Estrin's scheme, a chain log2 of the degree deep (src/lobe_bound.cpp).
+  // finish(q(x)) by Estrin's scheme: q's lower half plus x^(2^j) times its upper half, down to
+  // single coefficients, so that a call's chain of dependent operations is log2 of the degree
+  // deep, not the degree (a fragment loop's calls overlap only as far as the CPU's reorder
+  // buffer reaches). Unrolled up to kMaxUnrolledDegree, the same tree level by level past it;
+  // src/lobe_bound.cpp bounds the roundings of this tree.
   template <class T, class Finish>
   [[gnu::always_inline]] T with_q(T x, const std::array<T, kMaxDegree + 1>& q,
                                   Finish finish) const {
@@ -130,10 +157,16 @@ struct LobeKernel {
 };
 
 // The scalar path where its setup certifies it (src/scalar_pieces.hpp): the support
-// w = 1 - t in [0, 1 - t_cut] cut into equal pieces, scale F a polynomial on each. No branch
-// on t in the lobe and no clamp of the output: the setup proves every polynomial, its
-// roundings counted, within [0, scale_f]. From t_cut down, x is at least the last piece's
-// index (the setup's), and that piece's polynomial is 0 for every finite u.
+// w = 1 - t in [0, 1 - t_cut] cut into equal pieces (8 to 128, the fewest that meet the
+// promise), x = (1 - min(t, 1)) pieces_per_w, and scale F the polynomial of the piece floor(x)
+// (at most the last) in u = x - center, by Horner's rule in Real. About twenty instructions
+// (fifteen in float), no branch on t in [-1, 1] and no clamp of the output: the setup proves
+// every polynomial, its roundings counted, within [0, scale_f] after the rounding to float.
+// Piece 0 is expanded about t = 1, where u = 0 returns its constant term, scale_f, exactly;
+// from t_cut down x reaches the last piece, whose polynomial is 0 for every finite u. Where no
+// count meets the promise (a lobe cut at the horizon, whose floats just above t = 0 would reach
+// the zero piece; k above about 12) the table is empty and Lobe::eval calls the LobeKernel of
+// Arithmetic::scalar out of line.
 template <class Real, std::size_t kDegree>
 struct PiecewisePolynomial {
   static constexpr std::size_t degree = kDegree;
@@ -148,7 +181,8 @@ struct PiecewisePolynomial {
   std::vector<Piece> table;  // empty where the setup could not certify it
 
   [[gnu::always_inline]] float evaluate(float t) const noexcept {
-    // NaN kept; below -1, past every cut-off, 0: x stays below 2 pieces_per_w, finite.
+    // NaN kept, and t below -1 (past every cut-off) 0, before x: NaN's conversion to an integer
+    // is undefined, and below -1 x could overflow (from -1 up it is at most 2 pieces_per_w).
     if (!(t >= -1.0f)) [[unlikely]] return t != t ? t : 0.0f;
     const Real x = (Real(1) - Real(std::min(t, 1.0f))) * pieces_per_w;
     // Past the zero piece, clamped to it in integers: a clamp of t to t_cut would take a turn
@@ -165,19 +199,27 @@ struct PiecewisePolynomial {
   }
 };
 // Precise: cubics in double, x too (in float its rounding alone would reach 2^-22 of the
-// peak), rounded once to float. Fast: quadratics in float, x too, about a third faster.
+// peak), rounded once to float, so that no compiler flag (FMA, -ffp-contract) moves the result
+// by more than that rounding. Fast: quadratics in float, x too, about a third faster, certified
+// for products rounded or fused.
 using ScalarPieces = PiecewisePolynomial<double, 3>;
 using FastScalarPieces = PiecewisePolynomial<float, 2>;
 
-// PerLaneLobe's: c^2 = n H(1/n - y_center), coef = n K(.), acos(t)^2 = w G(w), v = c^2 acos(t)^2
-// and F = (1 - v R(v))^k, 0 where v >= v_cut. At w_limit every lane is past its cut-off: the
-// SIMD kernel clamps w there (t below needs no test of its own), the scalar one returns 0.
-// Where both also meet their targets as polynomials in n (in_n; FMA archs), the kernel takes
-// no reciprocal: c^2 = (c_squared_slope + c_squared_slope_lo) n + h[1], H's line uncentered,
-// and coef = coef_n_slope n + C(n), C's coefficients coef_n. The scalar path takes them too.
+// PerLaneLobe's kernel (kutlog/simd/lobe.hpp runs it). With y = 1/n: c^2 = n H(y - y_center),
+// coef = n K(y - y_center), acos(t)^2 = w G(w) with w = min(1 - t, w_limit), v = c^2 acos(t)^2
+// and F = (1 - v R(v))^k, 0 where v >= v_cut. w_limit lies past the cut-off of every lane (that
+// of n_min): the SIMD kernel clamps w there (t below needs no test of its own), the scalar one
+// returns 0. Where H is linear and both also meet their targets as polynomials in n (in_n; FMA
+// archs), the kernel takes no reciprocal: c^2 = (c_squared_slope + c_squared_slope_lo) n + h[1],
+// H's line uncentered, and coef = coef_n_slope n + C(n), C's coefficients coef_n; the scalar
+// path takes them too. The fast kernel's fits meet its own target: its slope of c^2 is one float
+// (c_squared_slope_lo = 0) and C often a constant, so c^2 and coef are one multiply-add each.
 struct PerLaneKernel {
   static constexpr int kMaxDegree = 20;
   using Coefficients = std::array<float, kMaxDegree + 1>;
+  // v_cut is (pi/2)^2 lowered by 2^-22 (fast 2^-18) of itself, more than v's own error, so that
+  // a lane past the cut-off returns exactly 0 even where its computed v falls short of (pi/2)^2
+  // (between the two, F is below the bound).
   float n_min = 1, n_max = 1, y_center = 0, v_cut = 0, w_limit = 0;
   int k = 1, h_degree = 0, k_degree = 0, g_degree = 0, r_degree = 0;
   bool in_n = false;
@@ -186,9 +228,9 @@ struct PerLaneKernel {
   bool w_clamped = true;
   float c_squared_slope = 0, c_squared_slope_lo = 0, coef_n_slope = 0;
   int coef_n_degree = 0;
-  // Where the SIMD kernel takes the power: in float lanes (fast, and precise at k = 1: the
-  // base is rounded once, as in double); in float lanes with the base's rounding carried
-  // beside it (precise at small k, FMA archs); else in double lanes.
+  // Where the SIMD kernel takes the power: in float lanes (fast, and precise at k = 1, where the
+  // base is one fused multiply-add, rounded once as in double); compensated, b^(k-1) (b + k e)
+  // with e the base's own rounding (precise at k = 2 to 5, FMA archs); else in double lanes.
   enum class Power { in_float, compensated, in_double };
   Power power = Power::in_double;
   // R's degree by variant: R is the same for every material, so the SIMD kernels unroll it.
@@ -269,7 +311,11 @@ struct PerLaneKernel {
   }
 };
 
-// PowerPoly's: y = n log2 t = x L(x) (+ n e), scale 2^y = 2^round(y) E(y - round(y)).
+// PowerPoly's, for one exponent (kutlog/simd/lobe.hpp's PreparedPowerPoly runs it): with
+// x = t - 1 (or, where decomposed, t = 2^e (1 + x), 1 + x in [sqrt(1/2), sqrt(2))),
+// y = n log2 t = x L(x) (+ n e), then scale 2^y = 2^round(y) E(y - round(y)), 2^round(y) a float
+// built from y's rounding bits and multiplied in: added to E's exponent bits instead, it would
+// turn a NaN t whose payload's low bits are set into a number.
 struct PowerPolyKernel {
   static constexpr int kMaxLogDegree = 12;
   static constexpr int kPreciseExpDegree = 6, kFastExpDegree = 4;  // of E, by variant
@@ -282,12 +328,15 @@ struct PowerPolyKernel {
 };
 
 // PerLanePowerPoly's: per lane, n clamped to [n_min, n_max], x = max(t_floor, min(1, t)) - 1,
-// y = n x L(x), out = scale(n) 2^round(y) E(y - round(y)), 0 where y <= y_zero.
+// y = n x L(x), out = scale(n) 2^round(y) E(y - round(y)) as PowerPoly's, E of degree 5
+// (precise) or 4 (fast), 0 where y <= y_zero. t_floor keeps every lane's y there below y_zero
+// whatever the log's error.
 struct PerLanePowerPolyKernel {
   static constexpr int kMaxDegree = 20;
   using Coefficients = std::array<float, kMaxDegree + 1>;
-  // scale(n): 1; scale_slope n + S(n); or the Blinn-Phong coef (n + 6) / (8 pi) + 1 / (pi n)
-  // with a reciprocal (its 2^(-n/2) term below the bound), where S would take more operations.
+  // scale(n): 1; scale_slope n + S(n) (fitted, where S's degree is at most 3); or the
+  // Blinn-Phong coef's closed form (n + 6) / (8 pi) + 1 / (pi n) with a reciprocal refined by one
+  // Newton step (its 2^(-n/2) term below the bound), where S would take more operations.
   enum class Scale : std::uint8_t { none, fitted, reciprocal };
   static constexpr int kPreciseExpDegree = 5, kFastExpDegree = 4;  // of E, by variant
   float n_min = 1, n_max = 1;
@@ -303,11 +352,11 @@ struct PerLanePowerPolyKernel {
 };
 
 // Where a Lobe's kernel runs: SIMD lanes without fused multiply-add (SSE4.1) or with it
-// (AVX2, AVX-512), or the scalar eval(float t) (kutlog/inspect.hpp).
+// (AVX2, AVX-512), or the scalar eval(float t). The contract: kutlog/inspect.hpp.
 enum class Arithmetic : std::uint8_t { unfused, fused, scalar };
 
-// The error bound the setup certified for one kernel, in the contract's units
-// (kutlog/inspect.hpp).
+// The error bound the setup certified for one kernel of a Lobe: abs_error relative to the peak,
+// epicenter_ulp where F >= 0.6. The contract: kutlog/inspect.hpp.
 struct KernelCertificate {
   double abs_error = 0, epicenter_ulp = 0;
 };

@@ -16,6 +16,7 @@
 
 namespace kutlog::simd {
 
+// The batches of float, double and int32 lanes of an xsimd arch.
 template <class Arch>
 using floats = xsimd::batch<float, Arch>;
 template <class Arch>

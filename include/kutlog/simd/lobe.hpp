@@ -156,7 +156,8 @@ class PreparedLobe {
   std::array<F, std::size_t(kDegree >= 0 ? kDegree : kutlog::detail::LobeKernel::kMaxDegree) + 1> q_;
 };
 
-// A PerLaneKernel with its constants broadcast once: F(t; n) per lane (kutlog/lobe.hpp).
+// A PerLaneKernel (inspect::kernel(per_lane_lobe, variant)) with its constants broadcast once:
+// F(t; n) per lane, PerLaneLobe's contract (kutlog/lobe.hpp).
 // kVariant must be the kernel's (its R's degree, and fast's c^2 one multiply-add). kPower must
 // be the kernel's power or in_double (slower, within the precise bound); compensated needs a
 // fused multiply-add. kInN, the kernel's in_n, needs one too (a compile-time choice: as a
@@ -260,8 +261,9 @@ class PreparedPerLaneLobe {
   Batches h_, coef_k_, g_, r_, coef_n_;
 };
 
-// F_kutlog of the lobe whose precomputed kernel is given (Lobe::kernel(variant, normalization,
-// has_fused_fma<Arch>)). For loops, build a PreparedLobe once instead.
+// F_kutlog of the lobe whose precomputed kernel is given (inspect::kernel(lobe, variant,
+// normalization, has_fused_fma<Arch>), kutlog/inspect.hpp), with Lobe's contract as long as an
+// unfused kernel is compiled unfused (-ffp-contract=off). For loops, build a PreparedLobe once.
 template <class Arch>
 inline floats<Arch> kutlog_lobe(floats<Arch> t, const kutlog::detail::LobeKernel& kernel) {
   return PreparedLobe<Arch>(kernel)(t);
@@ -281,7 +283,7 @@ inline floats<Arch> blinn_phong_u10(floats<Arch> t, floats<Arch> n,
   return scale * pow_u10(detail::clamp_zero_to(t, floats<Arch>(1.0f)), n);
 }
 
-// scale t^n by a PowerPolyKernel (kutlog/lobe.hpp), its degrees fixed here (Horner's rule
+// scale t^n by a PowerPolyKernel (kutlog/baselines.hpp), its degrees fixed here (Horner's rule
 // unrolled, coefficients in registers): the array functions pick the instance per kernel.
 template <class Arch, bool kDecomposed, int kLogDegree, int kExpDegree>
 class PreparedPowerPoly {
@@ -333,7 +335,7 @@ class PreparedPowerPoly {
   std::array<F, kutlog::detail::PowerPolyKernel::kPreciseExpDegree + 1> exp_;
 };
 
-// scale(n) t^n per lane by a PerLanePowerPolyKernel (kutlog/lobe.hpp): kExpDegree and kScale
+// scale(n) t^n per lane by a PerLanePowerPolyKernel (kutlog/baselines.hpp): kExpDegree and kScale
 // must be the kernel's; the log's and scale's degrees are taken as PerLaneLobe takes its own.
 template <class Arch, int kExpDegree, kutlog::detail::PerLanePowerPolyKernel::Scale kScale>
 class PreparedPerLanePowerPoly {

@@ -69,7 +69,7 @@ inline Pair<floats<Arch>> sin_cos_turn(floats<Arch> u) {
           cos_r ^ (swap ^ xsimd::bitwise_cast<F>(cos_sign))};
 }
 
-// The band cell of w in [2^-24, 1) in the layout `cells` (kutlog/sampling.hpp's SamplerCells)
+// The band cell of w in [2^-24, 1) in the layout `cells` (kutlog::detail::SamplerCells)
 // from its bits: the exponent and the top band_bits give the cell, the other mantissa bits,
 // as a float in [1, 2), 1.5 + x.
 template <class Arch>
@@ -89,7 +89,7 @@ inline BandPosition<Arch> band_position(floats<Arch> w) {
           xsimd::bitwise_cast<F>(fraction | I(0x3f800000)) - F(1.5f)};
 }
 
-// The cell of u1 in [0, 1) in the layout `cells` (kutlog/sampling.hpp's SamplerCells), and
+// The cell of u1 in [0, 1) in the layout `cells` (kutlog::detail::SamplerCells), and
 // u1's position x in it.
 template <class Arch>
 struct CellPosition {
