@@ -218,7 +218,8 @@ const detail::KernelTable& detail::best_kernel_table() {
 const detail::LobeArrayKernels* detail::lobe_array_kernels_for(detail::Arithmetic arithmetic) {
   if (arithmetic == detail::Arithmetic::scalar) return nullptr;
   for (Arch arch : kCompiledArchs)
-    if (arch_supported(arch) && table_of(arch).fused_fma == (arithmetic == detail::Arithmetic::fused))
+    if (arch_supported(arch) &&
+        table_of(arch).fused_fma == (arithmetic == detail::Arithmetic::fused))
       return &table_of(arch);
   return nullptr;
 }

@@ -16,7 +16,8 @@ constexpr long kChunk = 4096;
 
 }  // namespace
 
-std::optional<double> measured_epicenter_ulp(const detail::LobeKernel& kernel, detail::Arithmetic arithmetic,
+std::optional<double> measured_epicenter_ulp(const detail::LobeKernel& kernel,
+                                             detail::Arithmetic arithmetic,
                                              const QuotientFit& reference, double scale,
                                              double w_epicenter, double limit) {
   const LobeArrayKernels* kernels = lobe_array_kernels_for(arithmetic);
@@ -47,7 +48,7 @@ std::optional<double> measured_epicenter_ulp(const detail::LobeKernel& kernel, d
 
   // In chunks that stay in L1, the reference on the best arch's double lanes; every 16th
   // float first.
-  const EpicenterSweepKernel sweep = best_kernel_table().epicenter_worst_ulp;
+  const auto sweep = best_kernel_table().epicenter_worst_ulp;
   std::vector<float> t(std::size_t(std::min<long>(count, kChunk))), out(t.size());
   double worst = 0;
   for (const long stride : {16L, 1L}) {

@@ -34,7 +34,8 @@ constexpr long max_checked_epicenter_floats(detail::Arithmetic arithmetic) {
 // float's. nullopt when this CPU has no arch of that arithmetic or the epicenter has more
 // than max_checked_epicenter_floats(arithmetic) floats. Once the worst passes `limit` it returns
 // it at once, and every 16th float runs first: most kernels that miss cost a sixteenth.
-std::optional<double> measured_epicenter_ulp(const detail::LobeKernel& kernel, detail::Arithmetic arithmetic,
+std::optional<double> measured_epicenter_ulp(const detail::LobeKernel& kernel,
+                                             detail::Arithmetic arithmetic,
                                              const QuotientFit& reference, double scale,
                                              double w_epicenter, double limit);
 

@@ -38,13 +38,14 @@ float Lobe::eval_by_kernel(float t, Variant variant, Normalization normalization
 void Lobe::eval_out_of_line(const float* t, float* out, std::size_t count, Variant variant,
                             Normalization normalization) const noexcept {
   const detail::KernelTable& table = active_table();
-  const detail::LobeKernel& chosen = inspect::kernel(*this, variant, normalization, table.fused_fma);
+  const detail::LobeKernel& chosen =
+      inspect::kernel(*this, variant, normalization, table.fused_fma);
   table.of(chosen)(chosen, t, out, count);
 }
 void PerLaneLobe::eval(const float* t, const float* n, float* out, std::size_t count,
                        Variant variant, Normalization normalization) const noexcept {
-  active_table().kutlog_per_lane(kernels_[int(variant)], normalization == Normalization::exact_coef, t,
-                                 n, out, count);
+  active_table().per_lane_lobe(kernels_[int(variant)], normalization == Normalization::exact_coef,
+                               t, n, out, count);
 }
 void PowerPoly::eval(const float* t, float* out, std::size_t count) const noexcept {
   active_table().power_poly(kernel_, t, out, count);
@@ -78,20 +79,23 @@ SampledDirection LobeSampler::sample(float u1, float u2) const noexcept {
 void shade(const Lobe& lobe, Vectors normal, Vectors to_light, Vectors to_viewer, float* out,
            std::size_t count, const std::uint8_t* mask, ShadeOptions options) {
   const detail::KernelTable& table = active_table();
-  table.shade_vectors(inspect::kernel(lobe, options.variant, options.normalization, table.fused_fma),
-                      options, normal, to_light, to_viewer, out, count, mask);
+  table.shade_vectors(
+      inspect::kernel(lobe, options.variant, options.normalization, table.fused_fma), options,
+      normal, to_light, to_viewer, out, count, mask);
 }
 void shade(const Lobe& lobe, Vectors normal, Direction to_light, Direction to_viewer, float* out,
            std::size_t count, const std::uint8_t* mask, ShadeOptions options) {
   const detail::KernelTable& table = active_table();
-  table.shade_directions(inspect::kernel(lobe, options.variant, options.normalization, table.fused_fma),
-                         options, normal, to_light, to_viewer, out, count, mask);
+  table.shade_directions(
+      inspect::kernel(lobe, options.variant, options.normalization, table.fused_fma), options,
+      normal, to_light, to_viewer, out, count, mask);
 }
 void shade(const Lobe& lobe, const float* t, const float* n_dot_l, float* out, std::size_t count,
            const std::uint8_t* mask, ShadeOptions options) {
   const detail::KernelTable& table = active_table();
-  table.shade_cosines(inspect::kernel(lobe, options.variant, options.normalization, table.fused_fma),
-                      options, t, n_dot_l, out, count, mask);
+  table.shade_cosines(
+      inspect::kernel(lobe, options.variant, options.normalization, table.fused_fma), options, t,
+      n_dot_l, out, count, mask);
 }
 
 }  // namespace kutlog

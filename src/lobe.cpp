@@ -127,7 +127,8 @@ struct Profiles {
 // `finer` and it missed by little) or, for a SIMD kernel (one whose bound met the absolute
 // promise and missed the epicenter's by at most twice), by running it on every float of the
 // epicenter (src/epicenter_check.hpp). If it does, its certified bound.
-std::optional<detail::CertifiedError> meets(const detail::LobeKernel& kernel, detail::Arithmetic arithmetic,
+std::optional<detail::CertifiedError> meets(const detail::LobeKernel& kernel,
+                                            detail::Arithmetic arithmetic,
                                             const detail::QuotientFit& fit, double scale,
                                             const Profiles& profiles, bool finer,
                                             const Target& target, QuotientSeries* series_to_run) {
@@ -238,7 +239,8 @@ std::optional<CertifiedKernel> fit_polynomial(detail::LobeKernel kernel, Quotien
         // smaller than the output, against scale_f's whole rounding error in a lower binade).
         // SIMD kernels of either may be run over the epicenter: the whole scale saves an add
         // per batch, worth a second run.
-        const bool split = arithmetic != detail::Arithmetic::scalar && (compensated || scale_lo != 0);
+        const bool split =
+            arithmetic != detail::Arithmetic::scalar && (compensated || scale_lo != 0);
         QuotientSeries* series_to_run =
             !compensated && arithmetic != detail::Arithmetic::scalar ? &series : nullptr;
         kernel.scale_lo = 0;
@@ -266,9 +268,9 @@ std::optional<CertifiedKernel> fit_polynomial(detail::LobeKernel kernel, Quotien
 
 // B^k, B = cos(c theta) = 1 - w q(w), which converges for every lobe: in double lanes, or on
 // the scalar path in double or, where kernel.scalar_in_float, in float.
-std::optional<CertifiedKernel> fit_base_power(detail::LobeKernel kernel, QuotientSeries& series, double w_max,
-                                         double scale, const Profiles& profiles,
-                                         const Target& target, detail::Arithmetic arithmetic) {
+std::optional<CertifiedKernel> fit_base_power(detail::LobeKernel kernel, QuotientSeries& series,
+                                              double w_max, double scale, const Profiles& profiles,
+                                              const Target& target, detail::Arithmetic arithmetic) {
   kernel.form = detail::LobeKernel::Form::base_power;
   for (int degree = 1; degree <= detail::LobeKernel::kMaxDegree; ++degree) {
     // A base off by e puts F off by about k e near t = 1: a fit far from the target is skipped.
@@ -397,7 +399,8 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
   detail::ScalarPiecesFitter pieces_fitter(shape, t_cut_);
   for (Variant variant : {Variant::precise, Variant::fast})
     for (Normalization normalization : {Normalization::none, Normalization::exact_coef})
-      for (detail::Arithmetic arithmetic : {detail::Arithmetic::unfused, detail::Arithmetic::fused, detail::Arithmetic::scalar}) {
+      for (detail::Arithmetic arithmetic :
+           {detail::Arithmetic::unfused, detail::Arithmetic::fused, detail::Arithmetic::scalar}) {
         const Target& promised = variant == Variant::fast ? kFastTarget : kPreciseTarget;
         const double factor = detail::lobe_target_factor_for_tests.load(std::memory_order_relaxed);
         const Target target{promised.abs_error * factor, promised.epicenter_ulp * factor};

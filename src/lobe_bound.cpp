@@ -98,7 +98,8 @@ CertifiedError certified_error(const detail::LobeKernel& kernel, detail::Arithme
   const bool polynomial = kernel.form == detail::LobeKernel::Form::polynomial;
   // In float: the polynomial form in SIMD lanes, or either form in the scalar path where the
   // kernel says so (SIMD lanes run the base_power form in double).
-  const bool in_float = arithmetic == detail::Arithmetic::scalar ? kernel.scalar_in_float : polynomial;
+  const bool in_float =
+      arithmetic == detail::Arithmetic::scalar ? kernel.scalar_in_float : polynomial;
   // The scalar path's multiply-adds are fused or not as the caller's flags decide: the
   // unfused bound covers both.
   const bool product_rounded = arithmetic != detail::Arithmetic::fused || !in_float;
@@ -121,7 +122,8 @@ CertifiedError certified_error(const detail::LobeKernel& kernel, detail::Arithme
                                        2 * (1 - profile.w.back()) >= double(kernel.center_t));
   const bool split_scale = in_float && kernel.scale_lo != 0;
   const bool compensated = in_float && kernel.compensated;
-  if (compensated && (arithmetic != detail::Arithmetic::fused || degree == 0)) return {INFINITY, INFINITY};
+  if (compensated && (arithmetic != detail::Arithmetic::fused || degree == 0))
+    return {INFINITY, INFINITY};
   Coefficients above_constant{};  // r's: c_1 .. c_degree
   for (int i = 1; i <= degree; ++i) above_constant[i - 1] = stored[i];
   const double stored_scale =

@@ -55,7 +55,8 @@ FloatFit fit_base(double target, int degree) {
   return *r;
 }
 const FloatFit& base_fit(Variant variant) {
-  static const FloatFit precise = fit_base(kPreciseTarget, detail::PerLaneKernel::kPreciseBaseDegree),
+  static const FloatFit precise =
+                            fit_base(kPreciseTarget, detail::PerLaneKernel::kPreciseBaseDegree),
                         fast = fit_base(kFastTarget, detail::PerLaneKernel::kFastBaseDegree);
   return variant == Variant::fast ? fast : precise;
 }

@@ -36,7 +36,8 @@ std::vector<Cell> cells_of(detail::SamplerCells layout) {
   const double lower_width = 0.5 / layout.lower_cells;
   for (int i = 0; i < layout.lower_cells; ++i)
     result.push_back({i, true, i * lower_width, lower_width});
-  for (int exponent = layout.top_exponent; exponent >= detail::SamplerCells::kLowestExponent; --exponent)
+  for (int exponent = layout.top_exponent; exponent >= detail::SamplerCells::kLowestExponent;
+       --exponent)
     for (int band = 0; band < layout.bands(); ++band) {
       const double binade = std::ldexp(1.0, exponent), width = binade / layout.bands();
       result.push_back({layout.upper_cell(exponent, band), false, binade + band * width, width});
@@ -103,8 +104,8 @@ double stored_polynomial(Storage storage, int cell, int degree, double x) {
 }
 
 // The stored polynomial of the cell holding the argument, times its weight.
-double stored_value(detail::SamplerCells layout, Weight weight, int degree, Storage storage, bool lower,
-                    double argument) {
+double stored_value(detail::SamplerCells layout, Weight weight, int degree, Storage storage,
+                    bool lower, double argument) {
   const auto [cell, x] = layout.position(lower, argument);
   return weight_at(weight, lower, argument) * stored_polynomial(storage, cell, degree, x);
 }

@@ -66,7 +66,8 @@ struct LargestErrors {
 // the scalar path's.
 inline inspect::Arithmetic arithmetic_of(tools::LobeEvaluator evaluate) {
   if (evaluate != tools::evaluate_array) return inspect::Arithmetic::scalar;
-  return detail::active_lobe_loops.load()->fused_fma ? inspect::Arithmetic::fused : inspect::Arithmetic::unfused;
+  return detail::active_lobe_loops.load()->fused_fma ? inspect::Arithmetic::fused
+                                                     : inspect::Arithmetic::unfused;
 }
 
 // Asserts kutlog/accuracy.hpp's bounds of the value returned and the hard contracts
@@ -89,8 +90,8 @@ inline void expect_within_bounds(const Lobe& lobe, const std::array<tools::LobeE
     EXPECT_LE(errors[i].max_abs_error, bound.max_abs_error())
         << "worst t = " << errors[i].worst_abs_input;
     // Certified (the double reference's own error, about 1e-16, allowed for).
-    const inspect::KernelCertificate& certified =
-        inspect::certificate(lobe, tools::kLobeVariants[i / 2], tools::kLobeNormalizations[i % 2], arithmetic);
+    const inspect::KernelCertificate& certified = inspect::certificate(
+        lobe, tools::kLobeVariants[i / 2], tools::kLobeNormalizations[i % 2], arithmetic);
     // Kept only within the promise: a bound that missed it, even by little, never is.
     EXPECT_LE(certified.abs_error, bound.promised_abs_error) << "arithmetic " << int(arithmetic);
     EXPECT_LE(errors[i].max_abs_error, certified.abs_error * (1 + 1e-9))

@@ -28,6 +28,35 @@ TEST(FusedFma, MulAddRoundsOnceExactlyWhereTheRegistrySaysSo) {
 #undef KUTLOG_CHECK_MUL_ADD
 }
 
+// Every entry of the dispatch's lists (the math kernels, KUTLOG_ARRAY_ENTRIES, the lobes'
+// slots) is filled in the table of every compiled arch this CPU runs.
+void expect_every_entry_filled(const KernelTable& table, const char* arch) {
+#define KUTLOG_CHECK_UNARY(function, kernel, ...) EXPECT_NE(table.kernel, nullptr) << arch;
+#define KUTLOG_CHECK_BINARY(function, kernel, ...) \
+  EXPECT_NE(table.kernel, nullptr) << arch;        \
+  EXPECT_NE(table.kernel##_scalar, nullptr) << arch;
+#define KUTLOG_CHECK_ENTRY(entry, ...) EXPECT_NE(table.entry, nullptr) << arch << " " #entry;
+  KUTLOG_UNARY_MATH_FUNCTIONS(KUTLOG_CHECK_UNARY)
+  KUTLOG_BINARY_MATH_FUNCTIONS(KUTLOG_CHECK_BINARY)
+  KUTLOG_ARRAY_ENTRIES(KUTLOG_CHECK_ENTRY)
+#undef KUTLOG_CHECK_UNARY
+#undef KUTLOG_CHECK_BINARY
+#undef KUTLOG_CHECK_ENTRY
+  for (LobeArrayKernel loop : table.by_slot) EXPECT_NE(loop, nullptr) << arch;
+}
+
+TEST(KernelTables, EveryListedEntryIsFilledOnEveryCompiledArch) {
+  int checked = 0;
+#define KUTLOG_CHECK_TABLE(id, name, ...)                      \
+  if (arch_supported(Arch::id)) {                              \
+    expect_every_entry_filled(kernel_table<Arch::id>(), name); \
+    ++checked;                                                 \
+  }
+  KUTLOG_ARCHS(KUTLOG_CHECK_TABLE)
+#undef KUTLOG_CHECK_TABLE
+  EXPECT_EQ(checked, int(supported_archs().size()));
+}
+
 TEST(CpuFeatures, UnknownFeaturesAreAbsentAndTheEmptyListIsPresent) {
   EXPECT_FALSE(has_features(CpuWords{}, "no_such_feature"));
   EXPECT_TRUE(has_features(CpuWords{}, ""));

@@ -261,7 +261,8 @@ TEST_P(LobePerArch, ShortSpansEqualTheLongArrayForEveryKernel) {
     const Lobe lobe(c.n, c.k, c.Q);
     for (Variant variant : tools::kLobeVariants)
       for (Normalization normalization : tools::kLobeNormalizations) {
-        const inspect::LobeKernel& kernel = inspect::kernel(lobe, variant, normalization, loops.fused_fma);
+        const inspect::LobeKernel& kernel =
+            inspect::kernel(lobe, variant, normalization, loops.fused_fma);
         kernel_of_slot.emplace(Loops::slot_of(kernel), kernel);
         if (!kernel.clamped && kernel.scale_lo != 0) {  // split: its clamp put back
           inspect::LobeKernel clamped = kernel;
@@ -369,9 +370,9 @@ TEST_P(LobePerArch, PerLaneZeroFarPastTheCut) {
                      variant)
                      .w_clamped);
   }
-  EXPECT_TRUE(
-      inspect::kernel(PerLaneLobe(turning.n_min, turning.n_max, turning.k, turning.Q), Variant::fast)
-          .w_clamped);
+  EXPECT_TRUE(inspect::kernel(PerLaneLobe(turning.n_min, turning.n_max, turning.k, turning.Q),
+                              Variant::fast)
+                  .w_clamped);
   for (const PerLaneCase& c : {increasing, turning, PerLaneCase{1, 0.5, 1, 1e6}}) {
     const PerLaneLobe lobe(c.n_min, c.n_max, c.k, c.Q);
     std::vector<float> t, n;
@@ -558,8 +559,10 @@ TEST(LobeClamp, LowestComputedQIsBoundedAndBenchmarkLobesRunUnclamped) {
     int checked = 0;  // float polynomial kernels, not compensated: what the test is about
     for (Variant variant : tools::kLobeVariants)
       for (Normalization normalization : tools::kLobeNormalizations)
-        for (inspect::Arithmetic arithmetic : {inspect::Arithmetic::unfused, inspect::Arithmetic::fused}) {
-          const inspect::LobeKernel& kernel = inspect::kernel(lobe, variant, normalization, arithmetic);
+        for (inspect::Arithmetic arithmetic :
+             {inspect::Arithmetic::unfused, inspect::Arithmetic::fused}) {
+          const inspect::LobeKernel& kernel =
+              inspect::kernel(lobe, variant, normalization, arithmetic);
           const std::string name = testing::PrintToString(c) + " variant " +
                                    std::to_string(int(variant)) + " normalization " +
                                    std::to_string(int(normalization)) + " arithmetic " +
@@ -632,11 +635,13 @@ TEST_P(EpicenterCheck, MeasuresWhatAnIndependentSweepMeasures) {
                             LobeCase{4000, 2, 0.3}, LobeCase{10, 5, 0.5}}) {
     const Lobe lobe(c.n, c.k, c.Q);
     const double scale = lobe.coef_exact();
-    inspect::LobeKernel kernel = inspect::kernel(lobe, Variant::precise, Normalization::exact_coef, arithmetic);
+    inspect::LobeKernel kernel =
+        inspect::kernel(lobe, Variant::precise, Normalization::exact_coef, arithmetic);
     const std::string name = testing::PrintToString(c);
     const bool large = c.n == 10;
     if (large && arithmetic == inspect::Arithmetic::unfused)
-      EXPECT_EQ(kernel.form, inspect::LobeKernel::Form::polynomial) << name << ": the check was not run";
+      EXPECT_EQ(kernel.form, inspect::LobeKernel::Form::polynomial)
+          << name << ": the check was not run";
     if (kernel.form != inspect::LobeKernel::Form::polynomial) continue;
     ++checked;
     const LobeSetup setup = lobe_setup(lobe, kernel.center_t);
@@ -655,7 +660,8 @@ TEST_P(EpicenterCheck, MeasuresWhatAnIndependentSweepMeasures) {
     const auto sweep = [&] {
       std::vector<float> t;
       for (float x = 1.0f;; x = std::nextafter(x, 0.0f)) {
-        if (std::pow(std::cos(inspect::c(lobe) * std::acos((long double)x)), lobe.k()) < 0.6L) break;
+        if (std::pow(std::cos(inspect::c(lobe) * std::acos((long double)x)), lobe.k()) < 0.6L)
+          break;
         t.push_back(x);
       }
       std::vector<float> out(t.size());

@@ -159,7 +159,8 @@ void record_lobes(Outputs& outputs, bool scalar) {
     for (Variant variant : kVariants)
       for (Normalization normalization : kNormalizations) {
         if (scalar)
-          for (std::size_t i = 0; i < t.size(); ++i) out[i] = lobe.eval(t[i], variant, normalization);
+          for (std::size_t i = 0; i < t.size(); ++i)
+            out[i] = lobe.eval(t[i], variant, normalization);
         else
           lobe.eval(t.data(), out.data(), t.size(), variant, normalization);
         outputs["lobe/" + lobe_name(parameters, variant, normalization)] = digest(out);

@@ -35,7 +35,8 @@ constexpr double kAlbedoAccuracy = 5e-8;
 
 double pdf_allowance(const Material& material) {
   const double support = 2 * ref::pi * (1 - std::cos(material.brdf().lobe().integration_limit()));
-  return kSamplerBound.pdf_error * double(inspect::kernel(material.sampler()).density_scale) * support;
+  return kSamplerBound.pdf_error * double(inspect::kernel(material.sampler()).density_scale) *
+         support;
 }
 
 // Of the mean of count estimates; 0 where rounding makes the variance of all but equal

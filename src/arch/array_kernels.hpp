@@ -19,13 +19,13 @@ namespace kutlog::detail {
 
 // PerLaneLobe's array loop, on the instance of PreparedPerLaneLobe that matches the kernel.
 template <class Arch, bool kInN, bool kWClamped>
-void per_lane_instance(const detail::PerLaneKernel& kernel, bool normalized, const float* t,
+void per_lane_instance(const PerLaneKernel& kernel, bool normalized, const float* t,
                        const float* n, float* out, std::size_t count) {
   const auto run = [&](const auto& lobe) { map_arrays<Arch, 2>(lobe, {t, n}, out, count, 1.0f); };
   using simd::PreparedPerLaneLobe;
-  using Power = detail::PerLaneKernel::Power;
+  using Power = PerLaneKernel::Power;
   constexpr Variant kFast = Variant::fast, kPrecise = Variant::precise;
-  if (kernel.r_degree == detail::PerLaneKernel::kFastBaseDegree)
+  if (kernel.r_degree == PerLaneKernel::kFastBaseDegree)
     return run(PreparedPerLaneLobe<Arch, kFast, Power::in_float, kInN, kWClamped>(kernel,
                                                                                   normalized));
   if (kernel.power == Power::in_float)
@@ -38,7 +38,7 @@ void per_lane_instance(const detail::PerLaneKernel& kernel, bool normalized, con
   run(PreparedPerLaneLobe<Arch, kPrecise, Power::in_double, kInN, kWClamped>(kernel, normalized));
 }
 template <class Arch>
-void per_lane_array(const detail::PerLaneKernel& kernel, bool normalized, const float* t, const float* n,
+void per_lane_array(const PerLaneKernel& kernel, bool normalized, const float* t, const float* n,
                     float* out, std::size_t count) {
   const auto instance = [&]<bool kInN, bool kWClamped>() {
     per_lane_instance<Arch, kInN, kWClamped>(kernel, normalized, t, n, out, count);
@@ -50,6 +50,17 @@ void per_lane_array(const detail::PerLaneKernel& kernel, bool normalized, const 
                               : instance.template operator()<true, false>();
   kernel.w_clamped ? instance.template operator()<false, true>()
                    : instance.template operator()<false, false>();
+}
+
+// Whether simd::mul_add rounds once: (1 + 2^-12)^2 - (1 + 2^-11) = 2^-24 exactly, 0 where the
+// product rounds first (a tie).
+template <class Arch>
+bool mul_add_rounds_once() {
+  using F = xsimd::batch<float, Arch>;
+  alignas(64) float result[F::size];
+  const F a(1.0f + 0x1p-12f);
+  simd::mul_add(a, a, F(-1.0f - 0x1p-11f)).store_aligned(result);
+  return result[0] != 0.0f;
 }
 
 template <class Arch>
@@ -68,41 +79,14 @@ KernelTable make_kernel_table() {
     const F second(y);                                                                         \
     map_arrays<Arch, 1>([second](F a) { return simd::kernel(a, second); }, {x}, out, count);   \
   };
+#define KUTLOG_ENTRY_FILL(entry, loop, signature) table.entry = &loop<Arch>;
   KUTLOG_UNARY_MATH_FUNCTIONS(KUTLOG_UNARY_SLOT)
   KUTLOG_BINARY_MATH_FUNCTIONS(KUTLOG_BINARY_SLOTS)
+  KUTLOG_ARRAY_ENTRIES(KUTLOG_ENTRY_FILL)
 #undef KUTLOG_UNARY_SLOT
 #undef KUTLOG_BINARY_SLOTS
+#undef KUTLOG_ENTRY_FILL
   static_cast<LobeArrayKernels&>(table) = lobe_array_kernels<Arch>();
-  table.kutlog_per_lane = &per_lane_array<Arch>;
-  table.blinn_phong_xsimd = [](const float* t, float n, float scale, float* out, std::size_t count) {
-    const F exponent(n), factor(scale);
-    map_arrays<Arch, 1>([&](F v) { return simd::blinn_phong_xsimd(v, exponent, factor); }, {t},
-                        out, count);
-  };
-  table.blinn_phong_u10 = [](const float* t, float n, float scale, float* out, std::size_t count) {
-    const F exponent(n), factor(scale);
-    map_arrays<Arch, 1>([&](F v) { return simd::blinn_phong_u10(v, exponent, factor); }, {t},
-                        out, count);
-  };
-  table.power_poly = &power_poly_array<Arch>;
-  table.per_lane_power_poly = &per_lane_power_poly_array<Arch>;
-  table.shade_vectors = &shade_vectors_array<Arch>;
-  table.shade_directions = &shade_directions_array<Arch>;
-  table.shade_cosines = &shade_cosines_array<Arch>;
-  table.sample_lobe = &sample_lobe_array<Arch>;
-  table.sample_one = &simd::one_sample::sample<Arch>;
-  table.epicenter_worst_ulp = &epicenter_worst_ulp<Arch>;
-  table.schlick = [](const float* t, float n, float* out, std::size_t count) {
-    const F exponent(n);
-    map_arrays<Arch, 1>([&](F v) { return simd::schlick(v, exponent); }, {t}, out, count);
-  };
-  table.mul_add_rounds_once = [] {
-    // (1 + 2^-12)^2 - (1 + 2^-11) = 2^-24 exactly; 0 where the product rounds first (a tie).
-    alignas(64) float result[F::size];
-    const F a(1.0f + 0x1p-12f);
-    simd::mul_add(a, a, F(-1.0f - 0x1p-11f)).store_aligned(result);
-    return result[0] != 0.0f;
-  };
   return table;
 }
 

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <type_traits>
 
 #include "kutlog/dispatch.hpp"
 #include "kutlog/detail/math_functions.hpp"
@@ -15,26 +17,6 @@ using UnaryArrayKernel = void (*)(const float*, float*, std::size_t);
 using BinaryArrayKernel = void (*)(const float*, const float*, float*, std::size_t);
 using BinaryScalarArrayKernel = void (*)(const float*, float, float*, std::size_t);
 
-using PowerLobeArrayKernel = void (*)(const float*, float n, float scale, float*, std::size_t);
-
-using ShadeVectorsKernel = void (*)(const detail::LobeKernel&, const ShadeOptions&, Vectors, Vectors,
-                                    Vectors, float*, std::size_t, const std::uint8_t*);
-using ShadeDirectionsKernel = void (*)(const detail::LobeKernel&, const ShadeOptions&, Vectors, Direction,
-                                       Direction, float*, std::size_t, const std::uint8_t*);
-using ShadeCosinesKernel = void (*)(const detail::LobeKernel&, const ShadeOptions&, const float*,
-                                    const float*, float*, std::size_t, const std::uint8_t*);
-
-using PowerPolyArrayKernel = void (*)(const detail::PowerPolyKernel&, const float*, float*, std::size_t);
-using PerLanePowerPolyArrayKernel = void (*)(const detail::PerLanePowerPolyKernel&, const float*,
-                                             const float*, float*, std::size_t);
-
-using PerLaneArrayKernel = void (*)(const detail::PerLaneKernel&, bool normalized, const float*,
-                                    const float*, float*, std::size_t);
-
-using SampleArrayKernel = void (*)(const detail::SamplerKernel&, const float* u1, const float* u2,
-                                   DirectionSamples, std::size_t);
-using SampleOneKernel = SampledDirection (*)(const detail::SamplerKernel&, float u1, float u2);
-
 // The reference of src/epicenter_check.hpp's sweep: scale - (1 - t) p(center - t), p's
 // coefficients c[0..degree] in double, and the bound on its own error.
 struct EpicenterReference {
@@ -42,8 +24,43 @@ struct EpicenterReference {
   int degree;
   double center, scale, error;
 };
-using EpicenterSweepKernel = double (*)(const EpicenterReference&, const float* t,
-                                        const float* out, std::size_t);
+
+// The one list of dispatched entries past the math kernels (whose list is
+// kutlog/detail/math_functions.hpp) and the lobes' slots (LobeArrayKernels):
+// X(entry, loop, signature), the loop a function template on the xsimd arch in src/arch/ of
+// that signature. The table's field, its fill per arch and the call through
+// active_table().entry all come from here (docs/design.md, "Dispatch").
+#define KUTLOG_ARRAY_ENTRIES(X)                                                                   \
+  X(per_lane_lobe, per_lane_array,                                                               \
+    void(const PerLaneKernel&, bool normalized, const float* t, const float* n, float* out,      \
+         std::size_t count))                                                                     \
+  X(blinn_phong_xsimd, blinn_phong_xsimd_array,                                                  \
+    void(const float* t, float n, float scale, float* out, std::size_t count))                  \
+  X(blinn_phong_u10, blinn_phong_u10_array,                                                      \
+    void(const float* t, float n, float scale, float* out, std::size_t count))                  \
+  X(schlick, schlick_array, void(const float* t, float n, float* out, std::size_t count))       \
+  X(power_poly, power_poly_array,                                                                \
+    void(const PowerPolyKernel&, const float* t, float* out, std::size_t count))                \
+  X(per_lane_power_poly, per_lane_power_poly_array,                                              \
+    void(const PerLanePowerPolyKernel&, const float* t, const float* n, float* out,             \
+         std::size_t count))                                                                     \
+  X(shade_vectors, shade_vectors_array,                                                          \
+    void(const LobeKernel&, const ShadeOptions&, Vectors, Vectors, Vectors, float*, std::size_t, \
+         const std::uint8_t*))                                                                   \
+  X(shade_directions, shade_directions_array,                                                    \
+    void(const LobeKernel&, const ShadeOptions&, Vectors, Direction, Direction, float*,          \
+         std::size_t, const std::uint8_t*))                                                      \
+  X(shade_cosines, shade_cosines_array,                                                          \
+    void(const LobeKernel&, const ShadeOptions&, const float*, const float*, float*,            \
+         std::size_t, const std::uint8_t*))                                                      \
+  X(sample_lobe, sample_lobe_array,                                                              \
+    void(const SamplerKernel&, const float* u1, const float* u2, DirectionSamples,              \
+         std::size_t count))                                                                     \
+  X(sample_one, sample_one, SampledDirection(const SamplerKernel&, float u1, float u2))         \
+  X(epicenter_worst_ulp, epicenter_worst_ulp,                                                    \
+    double(const EpicenterReference&, const float* t, const float* out, std::size_t count))     \
+  /* Whether simd::mul_add rounds once on this arch, as measured (test_cpu_features.cpp). */   \
+  X(mul_add_rounds_once, mul_add_rounds_once, bool())
 
 // A LobeArrayKernels first (its fused_fma: which of a Lobe's kernels this arch runs), so that
 // the active table is what detail::active_lobe_loops points to (kutlog/lobe.hpp).
@@ -52,23 +69,13 @@ struct KernelTable : LobeArrayKernels {
 #define KUTLOG_BINARY_SLOTS(function, kernel, ...) \
   BinaryArrayKernel kernel;                       \
   BinaryScalarArrayKernel kernel##_scalar;
+#define KUTLOG_ENTRY_SLOT(entry, loop, signature) std::add_pointer_t<signature> entry;
   KUTLOG_UNARY_MATH_FUNCTIONS(KUTLOG_UNARY_SLOT)
   KUTLOG_BINARY_MATH_FUNCTIONS(KUTLOG_BINARY_SLOTS)
+  KUTLOG_ARRAY_ENTRIES(KUTLOG_ENTRY_SLOT)
 #undef KUTLOG_UNARY_SLOT
 #undef KUTLOG_BINARY_SLOTS
-  PerLaneArrayKernel kutlog_per_lane;
-  PowerLobeArrayKernel blinn_phong_xsimd, blinn_phong_u10;
-  PowerPolyArrayKernel power_poly;
-  PerLanePowerPolyArrayKernel per_lane_power_poly;
-  BinaryScalarArrayKernel schlick;
-  ShadeVectorsKernel shade_vectors;
-  ShadeDirectionsKernel shade_directions;
-  ShadeCosinesKernel shade_cosines;
-  SampleArrayKernel sample_lobe;
-  SampleOneKernel sample_one;
-  EpicenterSweepKernel epicenter_worst_ulp;
-  // Whether simd::mul_add rounds once on this arch, as measured (tests/test_cpu_features.cpp).
-  bool (*mul_add_rounds_once)();
+#undef KUTLOG_ENTRY_SLOT
 };
 
 // The table of one arch: specialized by src/arch/kernels.cpp, which CMake compiles once per

@@ -15,31 +15,31 @@ namespace kutlog::detail {
 // PowerPoly over an array: one loop per decomposition, variant (E's degree) and log degree,
 // picked per call by one lookup.
 template <class Arch, bool kDecomposed, int kExpDegree, int kLogDegree>
-void power_poly_loop(const detail::PowerPolyKernel& kernel, const float* t, float* out, std::size_t count) {
+void power_poly_loop(const PowerPolyKernel& kernel, const float* t, float* out, std::size_t count) {
   map_arrays<Arch, 1>(simd::PreparedPowerPoly<Arch, kDecomposed, kLogDegree, kExpDegree>(kernel),
                       {t}, out, count);
 }
 template <class Arch>
-void power_poly_array(const detail::PowerPolyKernel& kernel, const float* t, float* out, std::size_t count) {
-  constexpr int kDegrees = detail::PowerPolyKernel::kMaxLogDegree;
-  using Loop = void (*)(const detail::PowerPolyKernel&, const float*, float*, std::size_t);
+void power_poly_array(const PowerPolyKernel& kernel, const float* t, float* out, std::size_t count) {
+  constexpr int kDegrees = PowerPolyKernel::kMaxLogDegree;
+  using Loop = void (*)(const PowerPolyKernel&, const float*, float*, std::size_t);
   static constexpr auto kLoops = []<int... degree>(std::integer_sequence<int, degree...>) {
-    constexpr int kPrecise = detail::PowerPolyKernel::kPreciseExpDegree, kFast = detail::PowerPolyKernel::kFastExpDegree;
+    constexpr int kPrecise = PowerPolyKernel::kPreciseExpDegree, kFast = PowerPolyKernel::kFastExpDegree;
     return std::array<Loop, 4 * kDegrees>{&power_poly_loop<Arch, false, kPrecise, degree + 1>...,
                                           &power_poly_loop<Arch, false, kFast, degree + 1>...,
                                           &power_poly_loop<Arch, true, kPrecise, degree + 1>...,
                                           &power_poly_loop<Arch, true, kFast, degree + 1>...};
   }(std::make_integer_sequence<int, kDegrees>());
   const int form = 2 * int(kernel.decomposed) +
-                   int(kernel.exp_degree == detail::PowerPolyKernel::kFastExpDegree);
+                   int(kernel.exp_degree == PowerPolyKernel::kFastExpDegree);
   kLoops[std::size_t(form * kDegrees + kernel.log_degree - 1)](kernel, t, out, count);
 }
 
 // PerLanePowerPoly over arrays: one loop per variant (E's degree) and form of scale(n).
 template <class Arch>
-void per_lane_power_poly_array(const detail::PerLanePowerPolyKernel& kernel, const float* t,
+void per_lane_power_poly_array(const PerLanePowerPolyKernel& kernel, const float* t,
                                const float* n, float* out, std::size_t count) {
-  using Scale = detail::PerLanePowerPolyKernel::Scale;
+  using Scale = PerLanePowerPolyKernel::Scale;
   const auto run = [&]<int kExpDegree>() {
     const auto scaled = [&]<Scale kScale>() {
       map_arrays<Arch, 2>(simd::PreparedPerLanePowerPoly<Arch, kExpDegree, kScale>(kernel),
@@ -51,9 +51,28 @@ void per_lane_power_poly_array(const detail::PerLanePowerPolyKernel& kernel, con
       case Scale::reciprocal: return scaled.template operator()<Scale::reciprocal>();
     }
   };
-  if (kernel.exp_degree == detail::PerLanePowerPolyKernel::kPreciseExpDegree)
-    return run.template operator()<detail::PerLanePowerPolyKernel::kPreciseExpDegree>();
-  run.template operator()<detail::PerLanePowerPolyKernel::kFastExpDegree>();
+  if (kernel.exp_degree == PerLanePowerPolyKernel::kPreciseExpDegree)
+    return run.template operator()<PerLanePowerPolyKernel::kPreciseExpDegree>();
+  run.template operator()<PerLanePowerPolyKernel::kFastExpDegree>();
+}
+
+// The baselines: scale t^n by xsimd::pow and by pow_u10, and Schlick's t / (n - n t + t).
+template <class Arch>
+void blinn_phong_xsimd_array(const float* t, float n, float scale, float* out, std::size_t count) {
+  const xsimd::batch<float, Arch> exponent(n), factor(scale);
+  map_arrays<Arch, 1>([&](auto v) { return simd::blinn_phong_xsimd(v, exponent, factor); }, {t},
+                      out, count);
+}
+template <class Arch>
+void blinn_phong_u10_array(const float* t, float n, float scale, float* out, std::size_t count) {
+  const xsimd::batch<float, Arch> exponent(n), factor(scale);
+  map_arrays<Arch, 1>([&](auto v) { return simd::blinn_phong_u10(v, exponent, factor); }, {t},
+                      out, count);
+}
+template <class Arch>
+void schlick_array(const float* t, float n, float* out, std::size_t count) {
+  const xsimd::batch<float, Arch> exponent(n);
+  map_arrays<Arch, 1>([&](auto v) { return simd::schlick(v, exponent); }, {t}, out, count);
 }
 
 // The lobe over an array: the polynomial form with its degree as a template argument (unrolled,
@@ -61,7 +80,7 @@ void per_lane_power_poly_array(const detail::PerLanePowerPolyKernel& kernel, con
 // one per degree and finish, so that a call picks its loop by the slot its Lobe computed at
 // setup, with no further dispatch.
 template <class Arch, int kDegree, simd::LobeFinish kFinish, bool kClamped>
-[[gnu::noinline]] void kutlog_lobe_loop(const detail::LobeKernel& kernel, const float* t, float* out,
+[[gnu::noinline]] void kutlog_lobe_loop(const LobeKernel& kernel, const float* t, float* out,
                                         std::size_t count) {
   map_arrays<Arch, 1>(simd::PreparedLobe<Arch, kDegree, kFinish, kClamped>(kernel), {t}, out,
                       count, 1.0f);
@@ -72,7 +91,7 @@ template <class Arch, int kDegree, simd::LobeFinish kFinish, bool kClamped>
 // and a caller who reads back the span it just shaded, as shade() does, would wait for it.
 template <class Arch, int kDegree, simd::LobeFinish kFinish = simd::LobeFinish::any,
           bool kClamped = true>
-void kutlog_lobe_array(const detail::LobeKernel& kernel, const float* t, float* out, std::size_t count) {
+void kutlog_lobe_array(const LobeKernel& kernel, const float* t, float* out, std::size_t count) {
   using F = floats_of<Arch>;
   if (count > F::size)
     return kutlog_lobe_loop<Arch, kDegree, kFinish, kClamped>(kernel, t, out, count);

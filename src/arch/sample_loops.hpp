@@ -34,13 +34,19 @@ void sample_lobe_batches(const Sampler& sampler, const float* u1, const float* u
 }
 
 template <class Arch>
-void sample_lobe_array(const detail::SamplerKernel& kernel, const float* u1, const float* u2,
+void sample_lobe_array(const SamplerKernel& kernel, const float* u1, const float* u2,
                        DirectionSamples out, std::size_t count) {
   if constexpr (simd::PreparedSampler<Arch>::kRaisesPower)
     if (simd::PreparedSampler<Arch>::double_power_needed(kernel))
       return sample_lobe_batches<Arch>(simd::PreparedSampler<Arch, true>(kernel), u1, u2, out,
                                        count);
   sample_lobe_batches<Arch>(simd::PreparedSampler<Arch>(kernel), u1, u2, out, count);
+}
+
+// One sample, scalar float code compiled with this arch's flags (its fused multiply-add).
+template <class Arch>
+SampledDirection sample_one(const SamplerKernel& kernel, float u1, float u2) {
+  return simd::one_sample::sample<Arch>(kernel, u1, u2);
 }
 
 }  // namespace kutlog::detail

@@ -27,7 +27,7 @@ struct ChunkCosines {
   const float* n_dot_l;
 };
 template <class Arch, class Cosines>
-void shade_in_chunks(const detail::LobeKernel& kernel, const ShadeOptions& options,
+void shade_in_chunks(const LobeKernel& kernel, const ShadeOptions& options,
                      const Cosines& cosines, float* out, std::size_t count,
                      const std::uint8_t* mask) {
   using F = floats_of<Arch>;
@@ -56,7 +56,7 @@ inline floats_of<Arch> lobe_cosine(const ShadeOptions& options, const simd::Vect
 }
 
 template <class Arch>
-void shade_vectors_array(const detail::LobeKernel& kernel, const ShadeOptions& options, Vectors normal,
+void shade_vectors_array(const LobeKernel& kernel, const ShadeOptions& options, Vectors normal,
                          Vectors to_light, Vectors to_viewer, float* out, std::size_t count,
                          const std::uint8_t* mask) {
   using F = floats_of<Arch>;
@@ -96,7 +96,7 @@ Direction half_vector(Direction to_light, Direction to_viewer) {
 // computes N.H alone (blinn_cosine per lane took a square root and a division per batch), and
 // closer to the exact cosine: 4 units of float rounding against 8.5 (tests/cosine_error.hpp).
 template <class Arch>
-void shade_directions_array(const detail::LobeKernel& kernel, const ShadeOptions& options, Vectors normal,
+void shade_directions_array(const LobeKernel& kernel, const ShadeOptions& options, Vectors normal,
                             Direction to_light, Direction to_viewer, float* out,
                             std::size_t count, const std::uint8_t* mask) {
   using F = floats_of<Arch>;
@@ -123,7 +123,7 @@ void shade_directions_array(const detail::LobeKernel& kernel, const ShadeOptions
 }
 
 template <class Arch>
-void shade_cosines_array(const detail::LobeKernel& kernel, const ShadeOptions& options, const float* t,
+void shade_cosines_array(const LobeKernel& kernel, const ShadeOptions& options, const float* t,
                          const float* n_dot_l, float* out, std::size_t count,
                          const std::uint8_t* mask) {
   const auto given = [&](std::size_t begin, std::size_t, float*, float*) {

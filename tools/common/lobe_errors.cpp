@@ -87,8 +87,10 @@ std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep, LobeEv
   std::vector<std::uint32_t> kernel_cuts;
   for (Variant variant : kLobeVariants)
     for (Normalization normalization : kLobeNormalizations)
-      for (inspect::Arithmetic arithmetic : {inspect::Arithmetic::unfused, inspect::Arithmetic::fused}) {
-        const std::uint32_t key = order_key(inspect::kernel(lobe, variant, normalization, arithmetic).t_cut);
+      for (inspect::Arithmetic arithmetic :
+           {inspect::Arithmetic::unfused, inspect::Arithmetic::fused}) {
+        const std::uint32_t key =
+            order_key(inspect::kernel(lobe, variant, normalization, arithmetic).t_cut);
         const auto near = [&](std::uint32_t cut) {
           return std::max(key, cut) - std::min(key, cut) <= kernel_cut_reach / 2;
         };

@@ -26,8 +26,10 @@ inline Batch clamp_zero_to(Batch value, Batch upper) {
 // where a loop measured 6% slower.
 template <class Batch>
 [[gnu::always_inline]] inline Batch horner_to(
-    Batch x, const std::array<Batch, kutlog::detail::PerLaneKernel::kMaxDegree + 1>& c, int degree) {
-  static_assert(kutlog::detail::PerLaneKernel::kMaxDegree == 20 && kutlog::detail::PerLanePowerPolyKernel::kMaxDegree == 20,
+    Batch x, const std::array<Batch, kutlog::detail::PerLaneKernel::kMaxDegree + 1>& c,
+    int degree) {
+  static_assert(kutlog::detail::PerLaneKernel::kMaxDegree == 20 &&
+                    kutlog::detail::PerLanePowerPolyKernel::kMaxDegree == 20,
                 "one step per degree below");
   if (degree == 0) return c[0];
   if (degree == 1) return mul_add(c[1], x, c[0]);
@@ -153,7 +155,8 @@ class PreparedLobe {
   F t_cut_, center_, scale_, scale_lo_;  // scale_lo_ set unless the finish is plain
   LobeFinish finish_;
   // [0, degree] set
-  std::array<F, std::size_t(kDegree >= 0 ? kDegree : kutlog::detail::LobeKernel::kMaxDegree) + 1> q_;
+  std::array<F, std::size_t(kDegree >= 0 ? kDegree : kutlog::detail::LobeKernel::kMaxDegree) + 1>
+      q_;
 };
 
 // A PerLaneKernel (inspect::kernel(per_lane_lobe, variant)) with its constants broadcast once:
@@ -164,13 +167,15 @@ class PreparedLobe {
 // branch the line of c^2 cost AVX2 a tenth of its rate); kWClamped must be the kernel's
 // w_clamped or true.
 template <class Arch, Variant kVariant = Variant::precise,
-          kutlog::detail::PerLaneKernel::Power kPower = kutlog::detail::PerLaneKernel::Power::in_double, bool kInN = false,
-          bool kWClamped = true>
+          kutlog::detail::PerLaneKernel::Power kPower =
+              kutlog::detail::PerLaneKernel::Power::in_double,
+          bool kInN = false, bool kWClamped = true>
 class PreparedPerLaneLobe {
  public:
   using F = floats<Arch>;
-  static constexpr int kBaseDegree = kVariant == Variant::fast ? kutlog::detail::PerLaneKernel::kFastBaseDegree
-                                                               : kutlog::detail::PerLaneKernel::kPreciseBaseDegree;
+  static constexpr int kBaseDegree = kVariant == Variant::fast
+                                         ? kutlog::detail::PerLaneKernel::kFastBaseDegree
+                                         : kutlog::detail::PerLaneKernel::kPreciseBaseDegree;
 
   PreparedPerLaneLobe(const kutlog::detail::PerLaneKernel& kernel, bool normalized)
       : kernel_(kernel), normalized_(normalized), k_(float(kernel.k)),

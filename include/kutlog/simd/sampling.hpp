@@ -417,7 +417,8 @@ inline SampledDirection sample(const kutlog::detail::SamplerKernel& kernel, floa
   u1 = unit_interval(u1);
   const Row row = row_of(kernel, u1);
   const float fitted = cubic<Arch>(row.coefficients, row.x);
-  const float pdf = cubic<Arch>(row.coefficients + kutlog::detail::SamplerKernel::kRowDegree + 1, row.x);
+  const float pdf =
+      cubic<Arch>(row.coefficients + kutlog::detail::SamplerKernel::kRowDegree + 1, row.x);
   // The fit's weight min(2 u1, 1), exactly 1 above 1/2; the min on the bits (u1 >= 0 orders
   // them as the values), which GCC keeps a cmov where a float min became a branch.
   const float weight = std::bit_cast<float>(
