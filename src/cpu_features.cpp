@@ -1,5 +1,5 @@
 // CPU feature detection for the arch registry: one row per feature an arch can require. A new
-// arch whose features are all here is only an entry in cmake/KutlogArchs.cmake.
+// arch whose features are all here needs no row (docs/design.md, "Adding an arch").
 #include "cpu_features.hpp"
 
 #include "kutlog/archs.hpp"

@@ -256,12 +256,12 @@ void record_baselines(Outputs& outputs) {
   outputs["baseline/schlick"] = digest(out);
 }
 
-// Every entry of one arch's array functions, or the scalar paths (arch "scalar").
+// Every entry of one arch's functions (the one-sample call among them: it runs the arch's
+// build), or the inline scalar paths (arch "scalar").
 Outputs record(const std::string& arch) {
   Outputs outputs;
   if (arch == "scalar") {
     record_lobes(outputs, true);
-    record_sampler(outputs, true);
     return outputs;
   }
   force_arch(arch);
@@ -269,6 +269,7 @@ Outputs record(const std::string& arch) {
   record_lobes(outputs, false);
   record_shade(outputs);
   record_sampler(outputs, false);
+  record_sampler(outputs, true);
   record_baselines(outputs);
   reset_arch();
   return outputs;

@@ -33,9 +33,9 @@ template <class Arch, std::size_t Inputs, class Kernel>
   if (i == count) return;
   const std::size_t tail = count - i;
   const F value = apply([&](std::size_t input) {
-    return load_partial<Arch>(Arch{}, inputs[input] + i, tail, padding);
+    return load_partial<Arch>(inputs[input] + i, tail, padding);
   });
-  store_partial<Arch>(Arch{}, out + i, value, tail);
+  store_partial<Arch>(out + i, value, tail);
 }
 
 // The stream loop: kernel(inputs...) on batches of Inputs arrays, stored where mask (if any)
@@ -66,13 +66,13 @@ inline void map_masked(const Kernel& kernel, const float* const (&inputs)[Inputs
   // The tail: a partial batch, merged with what out holds where the mask leaves it.
   const std::size_t tail = count - i;
   const F value = [&]<std::size_t... input>(std::index_sequence<input...>) {
-    return kernel(load_partial<Arch>(Arch{}, inputs[input] + i, tail, 0.0f)...);
+    return kernel(load_partial<Arch>(inputs[input] + i, tail, 0.0f)...);
   }(std::make_index_sequence<Inputs>());
-  if (!mask) return store_partial<Arch>(Arch{}, out + i, value, tail);
+  if (!mask) return store_partial<Arch>(out + i, value, tail);
   std::uint8_t lanes[N] = {};
   for (std::size_t j = 0; j < tail; ++j) lanes[j] = mask[i + j];
-  const F kept = load_partial<Arch>(Arch{}, out + i, tail, 0.0f);
-  store_partial<Arch>(Arch{}, out + i, xsimd::select(simd::load_mask<Arch>(lanes), value, kept), tail);
+  const F kept = load_partial<Arch>(out + i, tail, 0.0f);
+  store_partial<Arch>(out + i, xsimd::select(simd::load_mask<Arch>(lanes), value, kept), tail);
 }
 
 }  // namespace kutlog::detail

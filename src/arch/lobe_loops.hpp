@@ -98,7 +98,7 @@ void kutlog_lobe_array(const LobeKernel& kernel, const float* t, float* out, std
   const simd::PreparedLobe<Arch, kDegree, kFinish, kClamped> lobe(kernel);
   if (count == F::size) return lobe(F::load_unaligned(t)).store_unaligned(out);
   if (count == 0) return;  // SSE4.1's partial load reads t[0]
-  store_partial<Arch>(Arch{}, out, lobe(load_partial<Arch>(Arch{}, t, count, 1.0f)), count);
+  store_partial<Arch>(out, lobe(load_partial<Arch>(t, count, 1.0f)), count);
 }
 template <class Arch>
 constexpr LobeArrayKernels lobe_array_kernels() {

@@ -25,12 +25,12 @@ void sample_lobe_batches(const Sampler& sampler, const float* u1, const float* u
   }
   if (i == count) return;
   const std::size_t tail = count - i;
-  const simd::SampleBatch<Arch> sample = sampler(load_partial<Arch>(Arch{}, u1 + i, tail, 0.5f),
-                                                 load_partial<Arch>(Arch{}, u2 + i, tail, 0.5f));
-  store_partial<Arch>(Arch{}, out.x + i, sample.x, tail);
-  store_partial<Arch>(Arch{}, out.y + i, sample.y, tail);
-  store_partial<Arch>(Arch{}, out.z + i, sample.z, tail);
-  store_partial<Arch>(Arch{}, out.pdf + i, sample.pdf, tail);
+  const simd::SampleBatch<Arch> sample = sampler(load_partial<Arch>(u1 + i, tail, 0.5f),
+                                                 load_partial<Arch>(u2 + i, tail, 0.5f));
+  store_partial<Arch>(out.x + i, sample.x, tail);
+  store_partial<Arch>(out.y + i, sample.y, tail);
+  store_partial<Arch>(out.z + i, sample.z, tail);
+  store_partial<Arch>(out.pdf + i, sample.pdf, tail);
 }
 
 template <class Arch>

@@ -13,6 +13,27 @@
 
 namespace kutlog::simd {
 
+namespace ops {
+// The lobe's finishes where t > t_cut (or t is NaN), else 0: scale - w q, and scale + value;
+// and the per-lane lobe's value * coef where v < v_cut (or NaN), else 0. AVX-512 computes
+// each under a lane mask (kutlog/simd/arch/avx512.hpp).
+template <class Arch>
+inline floats<Arch> neg_mul_add_where_above(floats<Arch> t, floats<Arch> t_cut, floats<Arch> w,
+                                            floats<Arch> q, floats<Arch> scale, generic_tag) {
+  return simd::zero_where(t <= t_cut, simd::neg_mul_add(w, q, scale));
+}
+template <class Arch>
+inline floats<Arch> add_where_above(floats<Arch> t, floats<Arch> t_cut, floats<Arch> scale,
+                                    floats<Arch> value, generic_tag) {
+  return simd::zero_where(t <= t_cut, scale + value);
+}
+template <class Arch>
+inline floats<Arch> mul_where_below(floats<Arch> v, floats<Arch> v_cut, floats<Arch> value,
+                                    floats<Arch> coef, generic_tag) {
+  return simd::zero_where(v >= v_cut, value * coef);
+}
+}  // namespace ops
+
 namespace detail {
 // min(upper, max(0, value)), NaN kept (x86's max and min return their second operand).
 template <class Batch>
@@ -124,17 +145,9 @@ class PreparedLobe {
 
   // scale - w q, or scale + (scale_lo - w q), where t > t_cut or NaN, else 0.
   [[gnu::always_inline]] F cut_at(F t, F w, F q) const {
-#if XSIMD_WITH_AVX512F
-    if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
-      const __mmask16 above = _mm512_cmp_ps_mask(t, t_cut_, _CMP_NLE_UQ);
-      if (finish() == LobeFinish::split)
-        return _mm512_maskz_add_ps(above, scale_, neg_mul_add(w, q, scale_lo_));
-      return _mm512_maskz_fnmadd_ps(above, w, q, scale_);
-    }
-#endif
-    const F value = finish() == LobeFinish::split ? scale_ + neg_mul_add(w, q, scale_lo_)
-                                                  : neg_mul_add(w, q, scale_);
-    return zero_where(t <= t_cut_, value);
+    if (finish() == LobeFinish::split)
+      return ops::add_where_above(t, t_cut_, scale_, neg_mul_add(w, q, scale_lo_), Arch{});
+    return ops::neg_mul_add_where_above(t, t_cut_, w, q, scale_, Arch{});
   }
 
   // scale (1 - w q(w))^k in double lanes, one rounding to float.
@@ -229,12 +242,7 @@ class PreparedPerLaneLobe {
                      detail::horner_to(n_clamped, coef_n_, kernel_.coef_n_degree));
     else
       coef = n_clamped * detail::horner_to(y_offset, coef_k_, kernel_.k_degree);
-#if XSIMD_WITH_AVX512F
-    if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>)
-      return _mm512_maskz_mul_ps(_mm512_cmp_ps_mask(v, F(kernel_.v_cut), _CMP_NGE_UQ), value,
-                                 coef);
-#endif
-    return zero_where(v >= F(kernel_.v_cut), value * coef);
+    return ops::mul_where_below(v, F(kernel_.v_cut), value, coef, Arch{});
   }
 
  private:

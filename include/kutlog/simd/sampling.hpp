@@ -138,20 +138,10 @@ inline floats<Arch> unit_interval(floats<Arch> u) {
 template <class Arch>
 inline SampleBatch<Arch> nan_where_unordered(floats<Arch> u1, floats<Arch> u2,
                                              SampleBatch<Arch> s) {
-  using F = floats<Arch>;
-  [[maybe_unused]] const auto or_lanes = [&s](F nan_lanes) -> SampleBatch<Arch> {
-    return {s.x | nan_lanes, s.y | nan_lanes, s.z | nan_lanes, s.pdf | nan_lanes};
-  };
-#if XSIMD_WITH_AVX
-  if constexpr (arch_of<Arch, xsimd::avx>) return or_lanes(_mm256_cmp_ps(u1, u2, _CMP_UNORD_Q));
-#endif
-#if XSIMD_WITH_SSE2
-  if constexpr (arch_of<Arch, xsimd::sse2>) return or_lanes(_mm_cmpunord_ps(u1, u2));
-#endif
-  const auto valid = (u1 == u1) & (u2 == u2);
-  const F nan(std::numeric_limits<float>::quiet_NaN());
-  return {xsimd::select(valid, s.x, nan), xsimd::select(valid, s.y, nan),
-          xsimd::select(valid, s.z, nan), xsimd::select(valid, s.pdf, nan)};
+  return {ops::nan_where_unordered(u1, u2, s.x, Arch{}),
+          ops::nan_where_unordered(u1, u2, s.y, Arch{}),
+          ops::nan_where_unordered(u1, u2, s.z, Arch{}),
+          ops::nan_where_unordered(u1, u2, s.pdf, Arch{})};
 }
 }  // namespace detail
 
@@ -164,12 +154,9 @@ class PreparedSampler {
   // In float, the base's rounding (2^-24 near 1) and each squaring's grow k-fold in F, within
   // the pdf bound up to this k (the grid and random lobes measure it).
   static constexpr int kFloatPowerMaxK = 5;
-  // Whether this arch's batches raise the lobe to a power at all (AVX-512's theta path).
-#if XSIMD_WITH_AVX512F
-  static constexpr bool kRaisesPower = arch_of<Arch, xsimd::avx512f>;
-#else
-  static constexpr bool kRaisesPower = false;
-#endif
+  // Whether this arch's batches draw theta from the coarse fit, and so raise the lobe to a
+  // power (AVX-512's path; the others read rows).
+  static constexpr bool kRaisesPower = ops::samples_by_polar_angle<Arch>(Arch{});
   static bool double_power_needed(const kutlog::detail::SamplerKernel& kernel) {
     return kRaisesPower && kernel.k > kFloatPowerMaxK;
   }
@@ -181,23 +168,20 @@ class PreparedSampler {
       : kernel_(kernel), half_c_(0.5f * kernel.c), limit_(kernel.limit),
         peak_(kernel.density_scale) {}
 
-#if XSIMD_WITH_AVX512F
-  // The polar angle theta(u1) of the coarse fit of the inverse CDF, in [0, limit], its
-  // coefficients looked up by permutes (one instruction, not 16 loads).
-  F polar_angle(F u1) const requires(arch_of<Arch, xsimd::avx512f>) {
+  // The polar angle theta(u1) of the coarse fit of the inverse CDF, in [0, limit], each
+  // coefficient looked up by the arch's lookup of 32 cells.
+  F polar_angle(F u1) const requires(kRaisesPower) {
     using K = kutlog::detail::SamplerKernel;
     const detail::CellPosition<Arch> at = detail::locate<K::kCoarse>(u1);
     const F p = detail::cell_polynomial(
         kernel_.coarse.data(), kernel_.coarse_degree, K::kCoarseStride, at,
-        [](const float* row, I cell) -> F {
-          return _mm512_permutex2var_ps(_mm512_loadu_ps(row), cell, _mm512_loadu_ps(row + 16));
-        });
+        [](const float* row, I cell) -> F { return ops::coarse_coefficient(row, cell, Arch{}); });
     const F theta = xsimd::select(at.lower, xsimd::sqrt(u1) * p, p);
     return xsimd::min(xsimd::max(theta, F(0.0f)), limit_);
   }
 
-  // AVX-512: theta from the coarse fit, then its sine and cosine, and the pdf from c theta.
-  SampleBatch<Arch> from_polar_angle(F u1, F u2) const requires(arch_of<Arch, xsimd::avx512f>) {
+  // Theta from the coarse fit, then its sine and cosine, and the pdf from c theta.
+  SampleBatch<Arch> from_polar_angle(F u1, F u2) const requires(kRaisesPower) {
     const F theta = polar_angle(detail::unit_interval(u1));
     const auto [sin_theta, cos_theta] = detail::sin_cos_halfpi(theta);
     const F lobe = lobe_power(detail::sin_cos_quarter_pi(half_c_ * theta).hi);
@@ -207,7 +191,7 @@ class PreparedSampler {
 
   // F = cos^k(c theta) = (1 - 2 s^2)^k, s = sin(c theta / 2), c theta in [0, pi/2]; in double
   // lanes, rounded once, where kDoublePower.
-  F lobe_power(F sin_half) const requires(arch_of<Arch, xsimd::avx512f>) {
+  F lobe_power(F sin_half) const requires(kRaisesPower) {
     if constexpr (!kDoublePower) {
       return kutlog::detail::integer_power(neg_mul_add(F(2.0f) * sin_half, sin_half, F(1.0f)),
                                            kernel_.k);
@@ -220,7 +204,6 @@ class PreparedSampler {
       return narrow(power(halves.hi), power(halves.lo));
     }
   }
-#endif
 
   // The other archs: the cell's row of SamplerKernel::rows (the one-sample call's), the
   // haversine q = sin^2(theta/2) (over its scale) and the pdf from its two cubics, then
@@ -253,10 +236,8 @@ class PreparedSampler {
   }
 
   SampleBatch<Arch> operator()(F u1, F u2) const {
-#if XSIMD_WITH_AVX512F
-    if constexpr (arch_of<Arch, xsimd::avx512f>) return from_polar_angle(u1, u2);
-#endif
-    return from_rows(u1, u2);
+    if constexpr (kRaisesPower) return from_polar_angle(u1, u2);
+    else return from_rows(u1, u2);
   }
 
  private:
@@ -287,46 +268,8 @@ class PreparedSampler {
       return reinterpret_cast<const float*>(
           reinterpret_cast<const char*>(kernel_.rows.data()) + offsets[lane]);
     };
-    std::array<F, kutlog::detail::SamplerKernel::kRowStride> c;
-#if XSIMD_WITH_AVX2
-    if constexpr (arch_of<Arch, xsimd::avx2> && N == 8) {
-      // An 8x8 transpose: pairs of rows interleaved, then pairs of pairs, then the halves.
-      __m256 r[8], pairs[8], quads[8];
-      for (std::size_t i = 0; i < 8; ++i) r[i] = _mm256_loadu_ps(row(i));
-      for (std::size_t i = 0; i < 8; i += 2) {
-        pairs[i] = _mm256_unpacklo_ps(r[i], r[i + 1]);
-        pairs[i + 1] = _mm256_unpackhi_ps(r[i], r[i + 1]);
-      }
-      for (std::size_t i = 0; i < 8; i += 4) {
-        quads[i] = _mm256_shuffle_ps(pairs[i], pairs[i + 2], 0x44);
-        quads[i + 1] = _mm256_shuffle_ps(pairs[i], pairs[i + 2], 0xEE);
-        quads[i + 2] = _mm256_shuffle_ps(pairs[i + 1], pairs[i + 3], 0x44);
-        quads[i + 3] = _mm256_shuffle_ps(pairs[i + 1], pairs[i + 3], 0xEE);
-      }
-      for (std::size_t j = 0; j < 4; ++j) {
-        c[j] = _mm256_permute2f128_ps(quads[j], quads[4 + j], 0x20);
-        c[4 + j] = _mm256_permute2f128_ps(quads[j], quads[4 + j], 0x31);
-      }
-      return c;
-    }
-#endif
-#if XSIMD_WITH_SSE4_1
-    if constexpr (std::is_same_v<Arch, xsimd::sse4_1>) {
-      for (std::size_t half = 0; half < 2; ++half) {
-        __m128 r0 = _mm_loadu_ps(row(0) + 4 * half), r1 = _mm_loadu_ps(row(1) + 4 * half),
-               r2 = _mm_loadu_ps(row(2) + 4 * half), r3 = _mm_loadu_ps(row(3) + 4 * half);
-        _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
-        c[4 * half] = r0, c[4 * half + 1] = r1, c[4 * half + 2] = r2, c[4 * half + 3] = r3;
-      }
-      return c;
-    }
-#endif
-    for (std::size_t j = 0; j < c.size(); ++j) {
-      alignas(64) float lanes[N];
-      for (std::size_t i = 0; i < N; ++i) lanes[i] = row(i)[j];
-      c[j] = F::load_aligned(lanes);
-    }
-    return c;
+    static_assert(kutlog::detail::SamplerKernel::kRowStride == 8);
+    return ops::transpose_rows<Arch>(row, Arch{});
   }
 
   const kutlog::detail::SamplerKernel& kernel_;

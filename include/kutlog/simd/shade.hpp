@@ -42,56 +42,15 @@ inline floats<Arch> phong_cosine(const Vector3<Arch>& normal, const Vector3<Arch
 // mask[0 .. size) != 0 as a batch_bool (reads exactly size bytes).
 template <class Arch>
 inline xsimd::batch_bool<float, Arch> load_mask(const std::uint8_t* mask) {
-#if XSIMD_WITH_AVX512F
-  if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
-    const __m512i lanes = _mm512_cvtepu8_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(mask)));
-    return xsimd::batch_bool<float, Arch>(_mm512_test_epi32_mask(lanes, lanes));
-  } else
-#endif
-#if XSIMD_WITH_AVX2
-  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
-    const __m256i lanes = _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(mask)));
-    return xsimd::batch_bool<float, Arch>(
-        _mm256_castsi256_ps(_mm256_cmpgt_epi32(lanes, _mm256_setzero_si256())));
-  } else
-#endif
-#if XSIMD_WITH_SSE2
-  if constexpr (std::is_base_of_v<xsimd::sse2, Arch> && floats<Arch>::size == 4) {
-    std::int32_t four;
-    __builtin_memcpy(&four, mask, sizeof four);
-    // Bytes to 32-bit lanes with SSE2 alone, so that this header compiles with the compiler's
-    // default x86-64 flags.
-    const __m128i zero = _mm_setzero_si128();
-    const __m128i lanes = _mm_unpacklo_epi16(_mm_unpacklo_epi8(_mm_cvtsi32_si128(four), zero), zero);
-    return xsimd::batch_bool<float, Arch>(_mm_castsi128_ps(_mm_cmpgt_epi32(lanes, _mm_setzero_si128())));
-  } else
-#endif
-  {  // any other arch (NEON; AVX without AVX2): lanes of 0 or 1, compared
-    alignas(64) float lanes[floats<Arch>::size];
-    for (std::size_t j = 0; j < floats<Arch>::size; ++j) lanes[j] = mask[j] ? 1.0f : 0.0f;
-    return floats<Arch>::load_aligned(lanes) != floats<Arch>(0.0f);
-  }
+  return ops::load_mask<Arch>(mask, Arch{});
 }
 
 // Stores value where selected; elsewhere memory keeps its contents (AVX2 and AVX-512 do not
-// write those lanes; SSE4.1 writes back what it read).
+// write those lanes; the others write back what they read).
 template <class Arch>
-inline void store_selected(float* out, floats<Arch> value, xsimd::batch_bool<float, Arch> selected) {
-#if XSIMD_WITH_AVX512F
-  if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
-    _mm512_mask_storeu_ps(out, selected, value);
-    return;
-  } else
-#endif
-#if XSIMD_WITH_AVX
-  if constexpr (std::is_base_of_v<xsimd::avx, Arch>) {
-    _mm256_maskstore_ps(out, _mm256_castps_si256(selected), value);
-    return;
-  } else
-#endif
-  {
-    xsimd::select(selected, value, floats<Arch>::load_unaligned(out)).store_unaligned(out);
-  }
+inline void store_selected(float* out, floats<Arch> value,
+                           xsimd::batch_bool<float, Arch> selected) {
+  ops::store_selected(out, value, selected, Arch{});
 }
 
 }  // namespace kutlog::simd
