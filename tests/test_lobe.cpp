@@ -245,10 +245,12 @@ TEST_P(LobePerArch, AnyCountAndOffsetWritesOnlyTheOutput) {
 
 // A span of at most one batch runs its own straight-line code, not the loop the exhaustive
 // sweeps go through: each array loop (degree, finish and clamp: LobeArrayKernels' slots) must
-// give, bit for bit, what it gives on a long array. One kernel per loop that the setup gives
-// this arch's arithmetic on the grid and 400 random lobes, which reach every finish but the
-// clamped split one (the setup proves that clamp needless wherever it splits the scale): that
-// loop runs a split kernel with its clamp put back.
+// give, bit for bit, what it gives on a long array, and that within the lobe's bounds of the
+// scalar reference on 1024 floats over the support (else another slot's loop, run in its
+// place, would pass). One kernel per loop that the setup gives this arch's arithmetic on the
+// grid and 400 random lobes, which reach every finish but the clamped split one (the setup
+// proves that clamp needless wherever it splits the scale): that loop runs a split kernel
+// with its clamp put back.
 TEST_P(LobePerArch, ShortSpansEqualTheLongArrayForEveryKernel) {
   using Loops = detail::LobeArrayKernels;
   float probe = 1;
@@ -256,18 +258,26 @@ TEST_P(LobePerArch, ShortSpansEqualTheLongArrayForEveryKernel) {
   const Loops& loops = *detail::active_lobe_loops.load();
   std::vector<LobeCase> candidates = accuracy_grid();
   for (const LobeCase& c : random_lobes(400, 2031)) candidates.push_back(c);
-  std::map<int, inspect::LobeKernel> kernel_of_slot;
+  struct SlotKernel {
+    inspect::LobeKernel kernel;
+    LobeCase lobe;
+    Variant variant;
+    Normalization normalization;
+  };
+  std::map<int, SlotKernel> kernel_of_slot;
   for (const LobeCase& c : candidates) {
     const Lobe lobe(c.n, c.k, c.Q);
     for (Variant variant : tools::kLobeVariants)
       for (Normalization normalization : tools::kLobeNormalizations) {
         const inspect::LobeKernel& kernel =
             inspect::kernel(lobe, variant, normalization, loops.fused_fma);
-        kernel_of_slot.emplace(Loops::slot_of(kernel), kernel);
+        kernel_of_slot.emplace(Loops::slot_of(kernel),
+                               SlotKernel{kernel, c, variant, normalization});
         if (!kernel.clamped && kernel.scale_lo != 0) {  // split: its clamp put back
           inspect::LobeKernel clamped = kernel;
           clamped.clamped = true;
-          kernel_of_slot.emplace(Loops::slot_of(clamped), clamped);
+          kernel_of_slot.emplace(Loops::slot_of(clamped),
+                                 SlotKernel{clamped, c, variant, normalization});
         }
       }
   }
@@ -282,12 +292,36 @@ TEST_P(LobePerArch, ShortSpansEqualTheLongArrayForEveryKernel) {
   std::printf("%zu array loops run\n", kernel_of_slot.size());
 
   constexpr std::size_t kLongest = 40;  // past two batches of every arch
-  std::vector<float> t(kLongest), whole(4 * kLongest), span(kLongest);
-  for (const auto& [slot_of_kernel, kernel] : kernel_of_slot) {
+  constexpr std::size_t kDense = 1024;
+  std::vector<float> t(kLongest), whole(4 * kLongest), span(kLongest), dense(kDense),
+      dense_out(kDense);
+  for (const auto& [slot_of_kernel, of_slot] : kernel_of_slot) {
     const int slot = slot_of_kernel;  // a lambda below names it (clang 14 captures no binding)
+    const LobeKernel& kernel = of_slot.kernel;
     const detail::LobeArrayKernel loop = loops.by_slot[slot];
-    // Over the support and off it, t = 1 and above, and NaN.
     const double cut = kernel.t_cut <= 0 ? -0.1 : double(kernel.t_cut);
+    // The loop on a long array against the reference, from the cut to past t = 1.
+    for (std::size_t i = 0; i < kDense; ++i)
+      dense[i] = float(cut + (1.02 - cut) * double(i) / double(kDense - 1));
+    loop(kernel, dense.data(), dense_out.data(), kDense);
+    const ref::KutlogLobe reference(of_slot.lobe.n, of_slot.lobe.k, of_slot.lobe.Q);
+    const double scale =
+        of_slot.normalization == Normalization::none ? 1.0 : reference.coef_exact();
+    tools::LobeErrors errors;
+    for (std::size_t i = 0; i < kDense; ++i)
+      errors.add(dense[i], dense_out[i], scale, reference.eval(dense[i]));
+    const LobeBound& bound = kLobeBounds[of_slot.variant == Variant::fast ? 1 : 0];
+    const std::string lobe_name =
+        "slot " + std::to_string(slot) + ", " + testing::PrintToString(of_slot.lobe) + ", " +
+        std::string(bound.variant) +
+        (of_slot.normalization == Normalization::none ? "" : " * coef");
+    EXPECT_LE(errors.max_abs_error, bound.max_abs_error())
+        << lobe_name << ", t = " << errors.worst_abs_input;
+    if (bound.max_epicenter_ulp() > 0)
+      EXPECT_LE(errors.max_epicenter_ulp, bound.max_epicenter_ulp())
+          << lobe_name << ", t = " << errors.worst_ulp_input;
+    EXPECT_EQ(errors.max_where_zero, 0.0f) << lobe_name << ", t = " << errors.max_where_zero_input;
+    // Short spans: over the support and off it, t = 1 and above, and NaN.
     for (std::size_t i = 0; i < kLongest; ++i)
       t[i] = float(cut + (1.02 - cut) * double(i) / double(kLongest - 3));
     t[kLongest / 2] = kNaN;

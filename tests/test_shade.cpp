@@ -309,18 +309,22 @@ TEST_P(ShadePerArch, DirectionsAndOptionalNDotLAgreeWithTheArrays) {
 // finish and clamp), a chunk of 256 lanes at a time. Over lobes whose kernels take different
 // loops, both variants and normalizations, and counts across chunk ends, under a mask, the
 // cosine form gives eval's output times max(N.L, 0), bit for bit, where the mask selects, and
-// leaves the other lanes as they were. (The vector forms' chunks: BlinnAndPhongMatchTheReference,
-// 4099 lanes.)
+// leaves the other lanes as they were; and that output is within the lobe's bound of the scalar
+// reference's scale F(t) max(N.L, 0), the product rounded once (eval and shade both run the
+// table's loop: another loop in its slot would pass the first check). (The vector forms'
+// chunks: BlinnAndPhongMatchTheReference, 4099 lanes.)
 TEST_P(ShadePerArch, CosinesGiveEvalTimesNDotLAcrossChunksAndKernels) {
   std::mt19937 engine(7);
   std::uniform_real_distribution<float> cosine(-0.2f, 1.05f), n_l(-0.5f, 1.0f);
+  std::uniform_real_distribution<double> unit(0, 1);
   constexpr std::size_t kMost = 1100;
   std::vector<float> t(kMost), n_dot_l(kMost), evaluated(kMost), out(kMost);
+  std::vector<double> in_support(kMost);
   std::vector<std::uint8_t> mask(kMost);
   // The mask in runs of 16 lanes selected, unselected and mixed: whole batches of each kind on
   // every arch.
   for (std::size_t i = 0; i < kMost; ++i) {
-    t[i] = cosine(engine), n_dot_l[i] = n_l(engine);
+    t[i] = cosine(engine), n_dot_l[i] = n_l(engine), in_support[i] = unit(engine);
     mask[i] = i / 16 % 3 == 0 || (i / 16 % 3 == 2 && (i * 5) % 7 < 4);
   }
   t[3] = NAN, n_dot_l[6] = NAN, t[680] = 1.5f;  // all three selected
@@ -333,6 +337,15 @@ TEST_P(ShadePerArch, CosinesGiveEvalTimesNDotLAcrossChunksAndKernels) {
     for (Variant variant : {Variant::precise, Variant::fast})
       for (Normalization normalization : {Normalization::none, Normalization::exact_coef}) {
         const Lobe lobe(n, k, Q);
+        const ref::KutlogLobe reference(n, k, Q);
+        const double scale =
+            normalization == Normalization::none ? 1.0 : reference.coef_exact();
+        const double bound =
+            kLobeBounds[variant == Variant::fast ? 1 : 0].max_abs_error() * scale;
+        // The odd lanes over the lobe's support, which few of [-0.2, 1.05] reach when narrow.
+        const double cut = std::cos(std::min(reference.cutoff_angle(), ref::pi / 2));
+        for (std::size_t i = 1; i < kMost; i += 2) t[i] = float(cut + (1 - cut) * in_support[i]);
+        t[3] = NAN;
         ShadeOptions options;
         options.variant = variant;
         options.normalization = normalization;
@@ -351,6 +364,12 @@ TEST_P(ShadePerArch, CosinesGiveEvalTimesNDotLAcrossChunksAndKernels) {
             }
             ASSERT_EQ(std::bit_cast<std::uint32_t>(out[i]), std::bit_cast<std::uint32_t>(expected))
                 << "n " << n << " k " << k << " count " << count << " lane " << i;
+            if (count != kMost || !mask[i]) continue;
+            const double f = scale * reference.eval(t[i]), lit = std::max(0.0f, n_dot_l[i]);
+            ASSERT_LE(std::fabs(out[i] - f * lit),
+                      (bound + test::kFloatUnitRoundoff * (f + bound)) * lit + 0x1p-150)
+                << "n " << n << " k " << k << " Q " << Q << " variant " << int(variant)
+                << " normalization " << int(normalization) << " lane " << i << " t " << t[i];
           }
         }
       }
