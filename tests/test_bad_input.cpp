@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <ios>
 #include <limits>
 #include <vector>
 
@@ -199,7 +200,9 @@ TEST_P(BadData, ShadeVectorsFollowTheDataRule) {
   }
 }
 
-// The cosine form: t under the lobe's data rule, n_dot_l as given (IEEE product).
+// The cosine form: t under the lobe's data rule, n_dot_l as given (IEEE product). Each rule
+// gives one float (the peak is the float coef, its product with N.L rounded once), asserted
+// exactly.
 TEST_P(BadData, ShadeCosinesFollowTheDataRule) {
   const Lobe lobe(20, 1, 0.5);
   const float coef = float(lobe.coef_exact());
@@ -212,9 +215,11 @@ TEST_P(BadData, ShadeCosinesFollowTheDataRule) {
   EXPECT_TRUE(std::isnan(out[0]));
   EXPECT_TRUE(std::isnan(out[1]));
   EXPECT_EQ(out[2], 0.0f);
-  EXPECT_FLOAT_EQ(out[3], 0.5f * coef);  // t = +inf > 1: the peak
+  // (gtest prints floats to 6 digits: in hex, 1 ulp shows)
+  EXPECT_EQ(out[3], 0.5f * coef)  // t = +inf > 1: the peak
+      << std::hexfloat << out[3] << " against " << 0.5f * coef;
   EXPECT_EQ(out[4], 0.0f);
-  EXPECT_FLOAT_EQ(out[5], coef);
+  EXPECT_EQ(out[5], coef) << std::hexfloat << out[5] << " against " << coef;
   EXPECT_EQ(out[6], kInff);
 }
 
