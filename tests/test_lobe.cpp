@@ -355,6 +355,10 @@ TEST_P(LobePerArch, PerLaneMaterialsWithinBoundsAndBetweenZeroAndPeak) {
   largest.expect_bounds_reached();
 }
 
+TEST_P(LobePerArch, PerLanePeaksAreCoefExactWithoutBias) {
+  expect_per_lane_peaks_unbiased(evaluate_per_lane_array);
+}
+
 TEST_P(LobePerArch, PerLaneDataRuleAndClamping) {
   const PerLaneLobe lobe(10, 1000, 3, 0.5);
   const float t[] = {1.5f, 1.0f, -0.2f, kNaN, 0.999f, 0.999f, 0.999f, -1.0f};

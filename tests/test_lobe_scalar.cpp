@@ -45,6 +45,10 @@ TEST(LobeScalar, PerLaneMaterialsWithinBoundsAndBetweenZeroAndPeak) {
       expect_per_lane_within_bounds(c, seed++, 8192, variant, evaluate_per_lane_scalar_here);
 }
 
+TEST(LobeScalar, PerLanePeaksAreCoefExactWithoutBias) {
+  expect_per_lane_peaks_unbiased(evaluate_per_lane_scalar_here);
+}
+
 // The data rule, the same as the arrays': the peak at t >= 1, 0 at and below the cut and for
 // t <= 0, NaN for NaN; the scalar and the array path agree on each of these exactly.
 TEST(LobeScalar, DataRuleAsTheArrays) {
