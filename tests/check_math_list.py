@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The one list of math kernels (include/kutlog/detail/math_functions.hpp) drives the docs'
 tables: README's accuracy table and docs/accuracy.md's aarch64 table have a row for every
-listed kernel, with its measured bound as the list gives it, and no row for another.
+listed kernel, with its measured bound as the list gives it, and no row for another; README's
+domain of each is the list's, the domain its bound was measured on.
 
   check_math_list.py <source dir>
 """
@@ -11,11 +12,11 @@ import sys
 
 
 def listed(root):
-    text = (root / "include/kutlog/detail/math_functions.hpp").read_text()
+    text = (root / "include/kutlog/detail/math_functions.hpp").read_text().replace("\\\n", " ")
     # X(function, kernel, promised, x86_64, aarch64, ...
-    pattern = r"X\(\s*\w+,\s*(\w+),\s*[\d.]+,\s*([\d.]+),\s*([\d.]+),"
-    return {kernel: (float(x86_64), float(aarch64))
-            for kernel, x86_64, aarch64 in re.findall(pattern, text)}
+    pattern = r'X\(\s*\w+,\s*(\w+),\s*[\d.]+,\s*([\d.]+),\s*([\d.]+),\s*"([^"]*)"'
+    return {kernel: (float(x86_64), float(aarch64), domain)
+            for kernel, x86_64, aarch64, domain in re.findall(pattern, text)}
 
 
 def table_rows(text, header_word):
@@ -49,6 +50,10 @@ def main(root):
             if float(rows[kernel][column]) != bounds[which]:
                 failures.append(f"{name}: {kernel}'s bound {rows[kernel][column]}, the list's "
                                 f"{bounds[which]}")
+    for kernel, (_, _, domain) in kernels.items():
+        if kernel in readme and readme[kernel][1] != domain:
+            failures.append(f"README.md accuracy table: {kernel}'s domain '{readme[kernel][1]}', "
+                            f"the list's '{domain}'")
     print(f"{len(kernels)} listed kernels: {' '.join(kernels)}")
     for failure in failures:
         print("FAIL:", failure)

@@ -297,7 +297,7 @@ TEST_P(LobePerArch, ShortSpansEqualTheLongArrayForEveryKernel) {
       dense_out(kDense);
   for (const auto& [slot_of_kernel, of_slot] : kernel_of_slot) {
     const int slot = slot_of_kernel;  // a lambda below names it (clang 14 captures no binding)
-    const LobeKernel& kernel = of_slot.kernel;
+    const inspect::LobeKernel& kernel = of_slot.kernel;
     const detail::LobeArrayKernel loop = loops.by_slot[slot];
     const double cut = kernel.t_cut <= 0 ? -0.1 : double(kernel.t_cut);
     // The loop on a long array against the reference, from the cut to past t = 1.
@@ -764,7 +764,7 @@ TEST(LobeSetup, RefusesAMaterialNoFitMeets) {
 // w = 1 - t, (1 - cos(sqrt(v))) / v in v.
 struct PerLaneFit {
   const char* name;
-  const PerLaneKernel::Coefficients& coefficients;
+  const inspect::PerLaneKernel::Coefficients& coefficients;
   int degree;
   double lo, hi, center;
   std::function<double(double)> g;
@@ -779,7 +779,7 @@ struct PerLaneFit {
     return value;
   }
 };
-std::vector<PerLaneFit> per_lane_fits(const PerLaneCase& c, const PerLaneKernel& kernel) {
+std::vector<PerLaneFit> per_lane_fits(const PerLaneCase& c, const inspect::PerLaneKernel& kernel) {
   const double theta_k = ref::acos_of_root(c.Q, c.k);
   const double w_max =
       std::max(1e-6, 1 - std::cos(ref::KutlogLobe(c.n_min, c.k, c.Q).cutoff_angle()));
@@ -887,7 +887,7 @@ TEST(PerLaneFits, MeetTheirTargetUnfusedOnTheSetupsGrid) {
                                PerLaneCase{4, 0.01, 5, 10}, PerLaneCase{1, 0.1, 3, 30},
                                PerLaneCase{4, 0.9, 30, 3000}}) {
     const PerLaneLobe lobe(c.n_min, c.n_max, c.k, c.Q);
-    for (const PerLaneFit& fit : per_lane_fits(c, lobe.kernel(Variant::precise))) {
+    for (const PerLaneFit& fit : per_lane_fits(c, inspect::kernel(lobe, Variant::precise))) {
       double fit_worst = 0;
       for (int j = 0; j <= kGridIntervals; ++j) {
         const float x = float(fit.lo + (fit.hi - fit.lo) * j / kGridIntervals);
