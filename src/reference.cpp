@@ -41,6 +41,11 @@ bool apply_data_rule(double t, double& out) {
 }  // namespace
 
 void validate_exponent(double n, const char* name) {
+  // pow(t, 0) = 1 is a valid exponent in scenes: say what stands for it.
+  if (n == 0)
+    throw_invalid(name, n,
+                  "finite and > 0 (for n = 0, a flat specular, shade with the constant 1, "
+                  "or coef 1 / pi normalized)");
   if (!std::isfinite(n) || !(n > 0)) throw_invalid(name, n, "finite and > 0");
 }
 

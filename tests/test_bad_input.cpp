@@ -36,6 +36,8 @@ constexpr float kInff = std::numeric_limits<float>::infinity();
 TEST(BadParameters, LobeNamesEachInvalidParameterAndItsRange) {
   for (double n : {0.0, -1.0, kNaN, kInf, -kInf})
     expect_invalid([n] { Lobe(n, 2, 0.5); }, "n", "finite and > 0");
+  // n = 0, pow(t, 0) in existing scenes: the message says what stands for it.
+  expect_invalid([] { Lobe(0, 2, 0.5); }, "n", "for n = 0, a flat specular, shade with");
   for (int k : {0, -3, ref::kMaxK + 1})
     expect_invalid([k] { Lobe(10, k, 0.5); }, "k", "integer in [1, 64]");
   for (double Q : {0.0, 1.0, -0.5, 1.5, kNaN, kInf})
