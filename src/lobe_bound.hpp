@@ -15,7 +15,8 @@
 //   the final ops:  scale - w q (or scale_f + (scale_lo - w q)), the rounding to float, the
 //                   clamp to [0, scale_f].
 // For the base_power form (B^k: in double lanes, or in float or double on the scalar path), the
-// base's error reaches F multiplied by k B^(k-1).
+// base's error reaches F multiplied by k B^(k-1). q's terms add up as PieceBudget, which the
+// scalar pieces (src/scalar_pieces.hpp) share.
 #pragma once
 
 #include <algorithm>
@@ -64,6 +65,8 @@ struct QuotientFit {
 };
 
 inline constexpr double kFloatUnit = 0x1p-24, kDoubleUnit = 0x1p-53;  // unit roundoffs
+// Where the ulp bound applies: F >= 0.6 (kutlog/lobe.hpp).
+inline constexpr double kEpicenter = 0.6;
 
 // The error of rounding a value of magnitude at most m: half an ulp in float (half of unit m
 // to unit m, by where m sits in its binade), unit m in double, whose underflow adds half the
@@ -105,7 +108,40 @@ struct CertifiedError {
   double abs_error;
   double epicenter_ulp;
   double lowest_q = -INFINITY;
+
+  // Takes one piece's bound on |out - scale F|: relative to the scale and, where the piece lies
+  // in the epicenter (lowest_output > 0: scale F at least that there), in ulps of that output.
+  void take_piece(double error, double scale, double lowest_output) {
+    abs_error = std::max(abs_error, error / scale);
+    if (lowest_output > 0)
+      epicenter_ulp = std::max(epicenter_ulp, error / ulp_of_float(lowest_output));
+  }
 };
+
+// The error budget of a certified kernel on one piece of its support (the array kernels'
+// certified_error and the scalar pieces' ScalarPiecesFitter): what its polynomial computes
+// against the exact function, each term at its worst over the piece. The output's own
+// operations and rounding to float (Rounding{true}) come on top, by the kernel's form.
+struct PieceBudget {
+  double approximation;    // the fit's truncation (and aliasing), times the scale
+  double coefficients;     // each coefficient's rounding to the kernel's type, at |x|^i
+  double range_shift = 0;  // the constant term moved to keep the output within its range
+  double evaluation;       // Horner's rule's (or Estrin's scheme's) roundings
+  double input;            // the variable's own error, through the polynomial's slope
+  double total() const { return approximation + coefficients + range_shift + evaluation + input; }
+};
+
+// The monomials are exact to long double's precision, not better: each counts as off by this.
+inline constexpr Real kMonomialRelativeError = 0x1p-60L;
+// PieceBudget::coefficients: sum |stored_i - exact_i| x_magnitude^i over the coefficients.
+inline double coefficient_rounding(std::span<const Real> exact, std::span<const double> stored,
+                                   double x_magnitude) {
+  double error = 0, x_power = 1;
+  for (std::size_t i = 0; i < stored.size(); ++i, x_power *= x_magnitude)
+    error += double(std::fabs(Real(stored[i]) - exact[i]) +
+                    kMonomialRelativeError * std::fabs(exact[i])) * x_power;
+  return error;
+}
 
 // kernel: a kernel of either form, its coefficients set from fit.monomials (times scale in
 // the polynomial form); scale: the exact scale (coef or 1) that kernel.scale_f rounds.

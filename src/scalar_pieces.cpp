@@ -4,6 +4,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <optional>
 #include <type_traits>
 
 #include "kutlog/detail/float_ulp.hpp"
@@ -12,8 +13,6 @@
 namespace kutlog::detail {
 namespace {
 
-// Where the ulp bound applies: F >= 0.6 (kutlog/lobe.hpp).
-constexpr double kEpicenter = 0.6;
 // Nodes of each piece's interpolant: its terms past the table's degree bound the truncation,
 // the last four (times 4) what the interpolation aliased, as F's terms decay geometrically.
 constexpr int kNodes = 10;
@@ -61,6 +60,77 @@ Range polynomial_range(const std::array<double, kTerms>& c, Real u_lo, Real u_hi
   return {double(lo) - margin, double(hi) + margin};
 }
 
+
+// A piece's polynomial as the table stores it, in double, on u in [u_lo, u_hi].
+template <class Type, std::size_t kTerms>
+struct PiecePolynomial {
+  static constexpr bool kInDouble = std::is_same_v<Type, double>;
+  static constexpr double kUnit = kInDouble ? kDoubleUnit : kFloatUnit;
+  std::array<double, kTerms> c;
+  double u_lo, u_hi;
+
+  // Horner's rule's roundings, fused or not, as the caller's flags compile it.
+  double horner() const {
+    return horner_bound(c, {u_lo, u_hi}, Rounding{!kInDouble}, true).error;
+  }
+  // At the peak, piece 0 (u >= 0): where the rest of Horner's rule, r(u) = c1 + c2 u + ...,
+  // is below 0 with its roundings, the computed u r(u) <= 0 and c0 + u r(u) rounds to at most
+  // c0 = scale: the peak is proven without the bound's slack.
+  bool peak_proven() const {
+    std::array<double, kTerms - 1> rest;
+    for (std::size_t j = 0; j + 1 < kTerms; ++j) rest[j] = c[j + 1];
+    const double rest_error = horner_bound(rest, {0, u_hi}, Rounding{!kInDouble}, true).error;
+    return polynomial_range(rest, 0, u_hi).hi + rest_error < 0;
+  }
+  // The range proof: the computed value within [0, ceiling) over the piece.
+  bool within(const Range& range, double ceiling, bool at_peak) const {
+    return range.lo - horner() >= 0 &&
+           ((at_peak && peak_proven()) || range.hi + horner() < ceiling);
+  }
+  // Moves c[0] where the range proof needs it; how far, or nothing if the proof still fails.
+  // `range` becomes the polynomial's range.
+  std::optional<double> prove_range(double ceiling, bool at_peak, Range& range) {
+    range = polynomial_range(c, u_lo, u_hi);
+    const double before = c[0];
+    if (range.lo - horner() < 0)
+      c[0] = double(Type(c[0] + (horner() - range.lo) * (1 + 0x1p-20) +
+                         4 * kUnit * std::fabs(c[0]) + 0x1p-140));
+    else if (!within(range, ceiling, at_peak))
+      c[0] = double(Type(c[0] - (range.hi + horner() - ceiling) * (1 + 0x1p-20) -
+                         4 * kUnit * std::fabs(c[0])));
+    if (c[0] != before) range = polynomial_range(c, u_lo, u_hi);
+    if (!within(range, ceiling, at_peak)) return std::nullopt;
+    return std::fabs(c[0] - before);
+  }
+  // |p'(u)| over the piece.
+  double slope() const {
+    const double u_bound = std::max(-u_lo, u_hi);
+    double slope = 0;
+    for (std::size_t j = kTerms - 1; j >= 1; --j)
+      slope = slope * u_bound + double(j) * std::fabs(c[j]);
+    return slope;
+  }
+};
+
+// x = (1 - t) pieces_per_w, as the pieces' evaluation computes it.
+template <class Type>
+Type x_of(float t, Type pieces_per_w) {
+  return (Type(1) - Type(std::min(t, 1.0f))) * pieces_per_w;
+}
+
+// The truncation of a piece's interpolant to a degree: its dropped terms, and what the
+// interpolation aliased (the last four, times 4), over a floor for the values' own noise.
+double truncation_error(const std::vector<Real>& chebyshev, int degree) {
+  double truncation = 0, last = 0, total = 0;
+  for (int j = 0; j < kNodes; ++j) {
+    const double term = double(std::fabs(chebyshev[std::size_t(j)]));
+    total += term;
+    if (j > degree) truncation += term;
+    if (j >= kNodes - 4) last += term;
+  }
+  return truncation + (4 * last + kValueNoise * total);
+}
+
 }  // namespace
 
 double ScalarPiecesFitter::value(double w) const {
@@ -90,113 +160,81 @@ ScalarPiecesFitter::Cut ScalarPiecesFitter::new_cut(int pieces) const {
 }
 
 template <class Pieces>
+std::optional<double> ScalarPiecesFitter::certify_piece(const Cut& cut, int i, double scale,
+                                                        const PieceInputs& inputs,
+                                                        typename Pieces::Piece& piece) const {
+  using Type = std::remove_cvref_t<decltype(Pieces::pieces_per_w)>;
+  constexpr std::size_t kDegree = Pieces::degree;
+  using Polynomial = PiecePolynomial<Type, kDegree + 1>;
+  Polynomial p{{}, -local_center(i), 0};
+  p.u_hi = (i == cut.pieces - 1 ? inputs.last_f_end : 1.0) + p.u_lo;
+  const std::vector<Real>& monomials = cut.monomials[kDegree][std::size_t(i)];
+  std::array<Real, kDegree + 1> exact;
+  for (std::size_t j = 0; j <= kDegree; ++j) {
+    exact[j] = scale * monomials[j];
+    p.c[j] = double(Type(exact[j]));  // the table's, exactly
+  }
+  double coefficients = coefficient_rounding(exact, p.c, std::max(-p.u_lo, p.u_hi));
+  if (i == 0) {  // the peak, t >= 1, exactly what the kernels return there: scale_f
+    coefficients += double(std::fabs(scale * monomials[0] - Real(Type(scale))));
+    p.c[0] = double(Type(scale));
+  }
+  Range range;
+  const std::optional<double> moved = p.prove_range(inputs.ceiling, i == 0, range);
+  if (!moved) return std::nullopt;
+  const PieceBudget budget{scale * truncation_error(cut.chebyshev[std::size_t(i)], int(kDegree)),
+                           coefficients, *moved, p.horner(), p.slope() * inputs.x_error};
+  for (std::size_t j = 0; j <= kDegree; ++j) piece.polynomial[j] = Type(p.c[j]);
+  piece.center = Type(i + local_center(i));
+  return budget.total() + (Polynomial::kInDouble ? Rounding{true}(range.hi + p.horner()) : 0.0);
+}
+
+template <class Pieces>
 std::optional<ScalarPiecesFitter::Fitted<Pieces>> ScalarPiecesFitter::certify(
     const Cut& cut, double scale, const CertifiedError& target, double& miss) const {
   using Type = std::remove_cvref_t<decltype(Pieces::pieces_per_w)>;
-  constexpr std::size_t kDegree = Pieces::degree;
   constexpr bool kInDouble = std::is_same_v<Type, double>;
-  constexpr double kUnit = kInDouble ? kDoubleUnit : kFloatUnit;
-  const Rounding round{!kInDouble};
   const int count = cut.pieces;
-  const auto x_of = [](float t, Type pieces_per_w) {  // as evaluate computes it
-    return (Type(1) - Type(std::min(t, 1.0f))) * pieces_per_w;
-  };
   Fitted<Pieces> fitted;
   Pieces& pieces = fitted.pieces;
   // Every t <= t_cut in the zero piece: x(t_cut) at least count, computed.
   pieces.pieces_per_w = Type(cut.pieces_per_w);
   while (x_of(t_cut_, pieces.pieces_per_w) < Type(count))
     pieces.pieces_per_w = std::nextafter(pieces.pieces_per_w, Type(INFINITY));
+  PieceInputs inputs;
   // x against w cut.pieces_per_w: off by the table's pieces_per_w and two roundings (1 - t
   // is exact from t = 1/2 up).
-  const double x_error =
-      (count + 1) * (std::fabs(double(pieces.pieces_per_w) / cut.pieces_per_w - 1) + 2.01 * kUnit);
+  inputs.x_error = (count + 1) * (std::fabs(double(pieces.pieces_per_w) / cut.pieces_per_w - 1) +
+                                  2.01 * (kInDouble ? kDoubleUnit : kFloatUnit));
   pieces.table.assign(std::size_t(count) + 1, {});
   pieces.table.back().center = Type(count);  // the zero piece: its u is finite
   const float scale_f = float(scale);
   // A computed value below this is at most scale_f as a float.
-  const double ceiling =
+  inputs.ceiling =
       kInDouble ? double(scale_f) + 0.5 * (double(std::nextafter(scale_f, INFINITY)) - scale_f)
                 : double(std::nextafter(scale_f, INFINITY));
-  // Near the cut, a t whose x reaches the zero piece: w above (count - x_error) / pieces_per_w.
-  double abs_error = scale * std::max(0.0, value((count - x_error) / cut.pieces_per_w));
-  double epicenter_ulp = 0;
   // The last piece's floats end at the float above t_cut: past it, between the cut-off and
   // t_cut, F continued is negative (k odd), and no float is there.
-  const double last_f_end = std::clamp(
+  inputs.last_f_end = std::clamp(
       double(x_of(std::nextafter(t_cut_, 2.0f), pieces.pieces_per_w)) - (count - 1), 0.0, 1.0);
+  CertifiedError& certified = fitted.certified;
+  certified = {0, 0};
+  // Near the cut, a t whose x reaches the zero piece: w above (count - x_error) / pieces_per_w.
+  certified.take_piece(
+      scale * std::max(0.0, value((count - inputs.x_error) / cut.pieces_per_w)), scale, 0);
   for (int i = 0; i < count; ++i) {
-    const double u_lo = -local_center(i);
-    const double u_hi = (i == count - 1 ? last_f_end : 1.0) + u_lo;
-    const double u_bound = std::max(-u_lo, u_hi);
-    const std::vector<Real>& chebyshev = cut.chebyshev[std::size_t(i)];
-    double truncation = 0, last = 0, total = 0;
-    for (int j = 0; j < kNodes; ++j) {
-      const double term = double(std::fabs(chebyshev[std::size_t(j)]));
-      total += term;
-      if (j > int(kDegree)) truncation += term;
-      if (j >= kNodes - 4) last += term;
-    }
-    truncation += 4 * last + kValueNoise * total;
-    const std::vector<Real>& monomials = cut.monomials[kDegree][std::size_t(i)];
-    std::array<double, kDegree + 1> c;  // the table's, exactly
-    double coefficient_error = 0;
-    for (std::size_t j = 0; j <= kDegree; ++j) {
-      const Real exact = scale * monomials[j];
-      c[j] = double(Type(exact));
-      coefficient_error += double(std::fabs(exact - Real(c[j])) + 0x1p-60L * std::fabs(exact)) *
-                           std::pow(u_bound, double(j));
-    }
-    if (i == 0) {  // the peak, t >= 1, exactly what the kernels return there: scale_f
-      coefficient_error += double(std::fabs(scale * monomials[0] - Real(Type(scale))));
-      c[0] = double(Type(scale));
-    }
-    // Horner's rule's roundings, fused or not, as the caller's flags compile it.
-    const auto horner = [&] { return horner_bound(c, {u_lo, u_hi}, round, true).error; };
-    // The range proof: the computed value within [0, ceiling), c[0] moved if it is not. At the
-    // peak, piece 0 (u >= 0): where the rest of Horner's rule, r(u) = c1 + c2 u + ..., is below
-    // 0 with its roundings, the computed u r(u) <= 0 and c0 + u r(u) rounds to at most
-    // c0 = scale: the peak is proven without the bound's slack.
-    const auto peak_proven = [&] {
-      if (i != 0) return false;
-      std::array<double, kDegree> rest;
-      for (std::size_t j = 0; j < kDegree; ++j) rest[j] = c[j + 1];
-      const double rest_error = horner_bound(rest, {0, u_hi}, round, true).error;
-      return polynomial_range(rest, 0, u_hi).hi + rest_error < 0;
-    };
-    const auto within = [&](const Range& range) {
-      return range.lo - horner() >= 0 && (peak_proven() || range.hi + horner() < ceiling);
-    };
-    Range range = polynomial_range(c, u_lo, u_hi);
-    const double before = c[0];
-    if (range.lo - horner() < 0)
-      c[0] = double(Type(c[0] + (horner() - range.lo) * (1 + 0x1p-20) +
-                         4 * kUnit * std::fabs(c[0]) + 0x1p-140));
-    else if (!within(range))
-      c[0] = double(Type(c[0] - (range.hi + horner() - ceiling) * (1 + 0x1p-20) -
-                         4 * kUnit * std::fabs(c[0])));
-    if (c[0] != before) range = polynomial_range(c, u_lo, u_hi);
-    if (!within(range)) return std::nullopt;
-    const double moved = std::fabs(c[0] - before);
-    double slope = 0;  // |p'(u)| over the piece
-    for (std::size_t j = kDegree; j >= 1; --j)
-      slope = slope * u_bound + double(j) * std::fabs(c[j]);
-    const double unrounded =
-        scale * truncation + coefficient_error + moved + horner() + slope * x_error;
-    const double error = unrounded + (kInDouble ? 0.5 * ulp_of_float(range.hi + horner()) : 0.0);
-    abs_error = std::max(abs_error, error);
-    if (cut.ends[i] >= kEpicenter) {  // the piece starts in the epicenter
-      const double lowest = scale * std::max(kEpicenter, cut.ends[i + 1]) * (1 - 0x1p-40);
-      epicenter_ulp = std::max(epicenter_ulp, error / ulp_of_float(lowest));
-    }
-    auto& piece = pieces.table[std::size_t(i)];
-    for (std::size_t j = 0; j <= kDegree; ++j) piece.polynomial[j] = Type(c[j]);
-    piece.center = Type(i + local_center(i));
+    const std::optional<double> error =
+        certify_piece<Pieces>(cut, i, scale, inputs, pieces.table[std::size_t(i)]);
+    if (!error) return std::nullopt;
+    const bool in_epicenter = cut.ends[std::size_t(i)] >= kEpicenter;  // where the piece starts
+    certified.take_piece(
+        *error, scale,
+        in_epicenter ? scale * std::max(kEpicenter, cut.ends[std::size_t(i) + 1]) * (1 - 0x1p-40)
+                     : 0);
   }
-  fitted.certified = {abs_error / scale, epicenter_ulp};
   // Every piece's, so that the next try's count is not underestimated from the first miss.
-  miss = std::max(fitted.certified.abs_error / target.abs_error,
-                  epicenter_ulp / target.epicenter_ulp);
+  miss = std::max(certified.abs_error / target.abs_error,
+                  certified.epicenter_ulp / target.epicenter_ulp);
   if (miss > 1) return std::nullopt;
   return fitted;
 }

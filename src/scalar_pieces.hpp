@@ -2,7 +2,8 @@
 // double for the precise variant, quadratics in float for the fast one), for the setup of
 // src/lobe.cpp. On each piece of the support, the truncation of scale F's Chebyshev
 // interpolant there, kept only when a bound on every error it can have, over every float t of
-// the piece, meets the variant's promise:
+// the piece, meets the variant's promise; the terms add up as the array kernels' do
+// (PieceBudget, src/lobe_bound.hpp):
 //   approximation:  the dropped Chebyshev terms, and the aliasing the last ones tell;
 //   coefficients:   each rounded to the table's type, and moved where the range proof needs it;
 //   Horner's rule:  horner_bound (src/lobe_bound.hpp), whether the caller's flags fuse or not;
@@ -58,6 +59,18 @@ class ScalarPiecesFitter {
   template <class Pieces>
   std::optional<Fitted<Pieces>> certify(const Cut& cut, double scale,
                                         const CertifiedError& target, double& miss) const;
+  // What every piece of one table's certification shares.
+  struct PieceInputs {
+    double x_error;     // of the computed x, absolute
+    double ceiling;     // a computed value below it is at most scale_f as a float
+    double last_f_end;  // where the last piece's floats end, in its f
+  };
+  // Fits piece i of the table (its polynomial and center) and bounds its error, absolute; or
+  // nothing if its range cannot be proven.
+  template <class Pieces>
+  std::optional<double> certify_piece(const Cut& cut, int i, double scale,
+                                      const PieceInputs& inputs,
+                                      typename Pieces::Piece& piece) const;
   Cut new_cut(int pieces) const;
   double value(double w) const;  // F, continued a little past the cut-off
 
