@@ -223,7 +223,10 @@ std::optional<CertifiedKernel> fit_polynomial(detail::LobeKernel kernel, Quotien
                                     std::pair{true, false}, std::pair{true, true}}) {
     if (compensated && arithmetic != detail::Arithmetic::fused) break;
     kernel.compensated = compensated;
-    for (int degree = 1; degree <= 16 && series.converged(); ++degree) {
+    // Up to the degrees the array loops unroll; past them, base_power.
+    for (int degree = 1;
+         degree <= detail::LobeArrayKernels::kMaxArrayUnrolledDegree && series.converged();
+         ++degree) {
       // The approximation alone must leave room: w_max q's truncation error at least.
       if (series.truncation_error(degree) * w_max > target.abs_error) continue;
       kernel.degree = degree;
@@ -326,7 +329,7 @@ CertifiedKernel fit_kernel(const ref::KutlogLobe& reference, float t_cut,
     in_float.scalar_in_float = true;
     std::optional<CertifiedKernel> polynomial = fit_polynomial(
         in_float, polynomial_series, shape, w_max, scale, profiles, target, arithmetic);
-    if (polynomial && polynomial->kernel.degree > detail::LobeKernel::kMaxUnrolledDegree)
+    if (polynomial && polynomial->kernel.degree > detail::LobeKernel::kMaxScalarUnrolledDegree)
       polynomial.reset();
     const std::optional<CertifiedKernel> base =
         fit_base_power(in_float, base_series(), w_max, scale, profiles, target, arithmetic);

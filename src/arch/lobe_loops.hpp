@@ -118,7 +118,7 @@ constexpr LobeArrayKernels lobe_array_kernels() {
       kernels.by_slot[kPer * degree + 4] =
           &kutlog_lobe_array<Arch, degree, LobeFinish::split, false>),
      ...);
-  }(std::make_integer_sequence<int, LobeArrayKernels::kMaxUnrolledDegree + 1>());
+  }(std::make_integer_sequence<int, LobeArrayKernels::kMaxArrayUnrolledDegree + 1>());
   kernels.by_slot[LobeArrayKernels::kSlots - 1] = &kutlog_lobe_array<Arch, -1>;
   return kernels;
 }

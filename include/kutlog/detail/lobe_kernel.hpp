@@ -21,7 +21,8 @@ namespace kutlog::detail {
 // variant, normalization and Arithmetic (inspect::kernel).
 struct LobeKernel {
   static constexpr int kMaxDegree = 24;
-  static constexpr int kMaxUnrolledDegree = 12;  // the scalar path's: past it a loop
+  // The scalar path's Estrin tree is unrolled up to this degree (with_q): past it a loop.
+  static constexpr int kMaxScalarUnrolledDegree = 12;
   enum class Form : std::uint8_t {
     polynomial,  // P = 1 - w q(s), s = center_t - min(t, 1); SIMD: q in float lanes
     base_power,  // P = (1 - w q(w))^k; SIMD: q and the power in double lanes
@@ -110,7 +111,7 @@ struct LobeKernel {
   // finish(q(x)) by Estrin's scheme: q's lower half plus x^(2^j) times its upper half, down to
   // single coefficients, so that a call's chain of dependent operations is log2 of the degree
   // deep, not the degree (a fragment loop's calls overlap only as far as the CPU's reorder
-  // buffer reaches). Unrolled up to kMaxUnrolledDegree, the same tree level by level past it;
+  // buffer reaches). Unrolled up to kMaxScalarUnrolledDegree, the same tree level by level past it;
   // src/lobe_bound.cpp bounds the roundings of this tree.
   template <class T, class Finish>
   [[gnu::always_inline]] T with_q(T x, const std::array<T, kMaxDegree + 1>& q,
@@ -129,7 +130,7 @@ struct LobeKernel {
       case 10: return finish(estrin<0, 11>(x, q));
       case 11: return finish(estrin<0, 12>(x, q));
       case 12: return finish(estrin<0, 13>(x, q));
-      default: {  // past kMaxUnrolledDegree: the same tree, level by level (pairs, ...)
+      default: {  // past kMaxScalarUnrolledDegree: the same tree, level by level (pairs, ...)
         std::array<T, kMaxDegree + 1> sums = q;
         T power = x;
         for (std::size_t count = std::size_t(degree) + 1; count > 1;
