@@ -74,87 +74,102 @@ void run_array(benchmark::State& state, Arch arch, const std::vector<float>& x,
   state.SetItemsProcessed(state.iterations() * std::int64_t(kArrayLength));
 }
 
-// Through the public array functions (kutlog/lobe.hpp), as users call them.
-inline void register_lobe_benchmarks(Arch arch) {
-  const std::string arch_label(arch_name(arch));
+// Registers "lobe/<kernel>/n:<n><k>/arch:<arch>" benchmarks.
+struct LobeRegistrar {
+  std::string at_n, arch_label;
+  template <class Body>
+  void operator()(const std::string& kernel, const std::string& k, Body body) const {
+    benchmark::RegisterBenchmark(("lobe/" + kernel + at_n + k + "/arch:" + arch_label).c_str(),
+                                 body);
+  }
+};
+
+// kutlog's lobes at n for each k: one material (Lobe) and a glossiness map (PerLaneLobe).
+inline void register_kutlog_lobes(Arch arch, int n, const LobeRegistrar& add) {
   constexpr std::size_t N = kArrayLength;
-  for (int n : kLobeExponents) {
-    const std::string at_n = "/n:" + std::to_string(n);
-    const auto add = [&](const std::string& kernel, const std::string& k, auto body) {
-      benchmark::RegisterBenchmark(("lobe/" + kernel + at_n + k + "/arch:" + arch_label).c_str(),
-                                   body);
-    };
-    for (int k : kLobePowers) {
-      const std::string at_k = "/k:" + std::to_string(k);
-      // Lobes are built inside the benchmarks (once per run), so registering costs nothing.
-      for (Variant variant : {Variant::precise, Variant::fast})
-        add(variant == Variant::precise ? "kutlog_precise" : "kutlog_fast", at_k,
-            [=](benchmark::State& state) {
-              const Lobe lobe(n, k, kLobeAnchor);
-              const std::vector<float> t = lobe_inputs(lobe);
-              run_array(state, arch, t, t, [&](const float* x, const float*, float* out) {
-                lobe.eval(x, out, N, variant, Normalization::exact_coef);
-              });
-            });
-      for (Variant variant : {Variant::precise, Variant::fast})
-        add(variant == Variant::precise ? "kutlog_perlane" : "kutlog_perlane_fast", at_k,
-            [=](benchmark::State& state) {
-              // A glossiness map around n: each lane's n log-uniform in [n/2, 2n].
-              const PerLaneLobe lobe(std::max(k, n / 2), 2.0 * n, k, kLobeAnchor);
-              std::vector<float> exponents =
-                  uniform_inputs(std::log(n / 2.0f), std::log(2.0f * n), 2);
-              for (float& e : exponents) e = std::max(float(k), std::exp(e));
-              run_array(state, arch, lobe_inputs(Lobe(n, k, kLobeAnchor)), exponents,
-                        [&](const float* x, const float* y, float* out) {
-                          lobe.eval(x, y, out, N, variant, Normalization::exact_coef);
-                        });
-            });
-    }
-    const std::vector<float> t = lobe_inputs(Lobe(n, 1, kLobeAnchor));
-    const float exponent = float(n);
-    add("pow_xsimd", "", [=](benchmark::State& state) {
-      run_array(state, arch, t, t, [&](const float* x, const float*, float* out) {
-        blinn_phong_xsimd(x, out, N, exponent);
-      });
-    });
-    // Its per-lane form (kutlog::PerLanePowerPoly) on the same gloss map as kutlog_perlane, at
-    // PerLaneLobe's accuracies, normalized per lane; its domain, n_min >= 44, skips n = 10.
+  for (int k : kLobePowers) {
+    const std::string at_k = "/k:" + std::to_string(k);
+    // Lobes are built inside the benchmarks (once per run), so registering costs nothing.
     for (Variant variant : {Variant::precise, Variant::fast})
-      if (n >= 100)
-        add(variant == Variant::precise ? "pow_poly_perlane_precise" : "pow_poly_perlane_fast", "",
-            [=](benchmark::State& state) {
-              const PerLanePowerPoly power(n / 2.0, 2.0 * n, variant, Normalization::exact_coef);
-              std::vector<float> exponents =
-                  uniform_inputs(std::log(n / 2.0f), std::log(2.0f * n), 2);
-              for (float& e : exponents) e = std::exp(e);
-              run_array(state, arch, t, exponents,
-                        [&](const float* x, const float* y, float* out) {
-                          power.eval(x, y, out, N);
-                        });
-            });
-    // The fast pow a speed-minded user writes for one material (kutlog::PowerPoly), at each
-    // lobe variant's accuracy, the normalization folded in as kutlog's.
-    for (Variant variant : {Variant::precise, Variant::fast})
-      add(variant == Variant::precise ? "pow_poly_precise" : "pow_poly_fast", "",
+      add(variant == Variant::precise ? "kutlog_precise" : "kutlog_fast", at_k,
           [=](benchmark::State& state) {
-            const PowerPoly power(n, variant, ref::blinn_phong_exact_coef(n));
+            const Lobe lobe(n, k, kLobeAnchor);
+            const std::vector<float> t = lobe_inputs(lobe);
             run_array(state, arch, t, t, [&](const float* x, const float*, float* out) {
-              power.eval(x, out, N);
+              lobe.eval(x, out, N, variant, Normalization::exact_coef);
             });
           });
-    add("pow_precise", "", [=](benchmark::State& state) {
-      run_array(state, arch, t, t, [&](const float* x, const float*, float* out) {
-        blinn_phong_u10(x, out, N, exponent);
-      });
-    });
-    add("schlick", "", [=](benchmark::State& state) {
-      run_array(state, arch, t, t, [&](const float* x, const float*, float* out) {
-        schlick(x, out, N, exponent);
-      });
-    });
+    for (Variant variant : {Variant::precise, Variant::fast})
+      add(variant == Variant::precise ? "kutlog_perlane" : "kutlog_perlane_fast", at_k,
+          [=](benchmark::State& state) {
+            // A glossiness map around n: each lane's n log-uniform in [n/2, 2n].
+            const PerLaneLobe lobe(std::max(k, n / 2), 2.0 * n, k, kLobeAnchor);
+            std::vector<float> exponents =
+                uniform_inputs(std::log(n / 2.0f), std::log(2.0f * n), 2);
+            for (float& e : exponents) e = std::max(float(k), std::exp(e));
+            run_array(state, arch, lobe_inputs(Lobe(n, k, kLobeAnchor)), exponents,
+                      [&](const float* x, const float* y, float* out) {
+                        lobe.eval(x, y, out, N, variant, Normalization::exact_coef);
+                      });
+          });
   }
-  // The call shapes of a renderer's spans: the 4096 inputs through the array eval in spans of
-  // `count` (the per-element cost of a span of that size), default normalization.
+}
+
+// The pow-based peers at n (kutlog/baselines.hpp): a pow per fragment, the fast pows a
+// speed-minded user writes, and Schlick's rational approximation.
+inline void register_pow_peers(Arch arch, int n, const LobeRegistrar& add) {
+  constexpr std::size_t N = kArrayLength;
+  const std::vector<float> t = lobe_inputs(Lobe(n, 1, kLobeAnchor));
+  const float exponent = float(n);
+  add("pow_xsimd", "", [=](benchmark::State& state) {
+    run_array(state, arch, t, t, [&](const float* x, const float*, float* out) {
+      blinn_phong_xsimd(x, out, N, exponent);
+    });
+  });
+  // Its per-lane form (kutlog::PerLanePowerPoly) on the same gloss map as kutlog_perlane, at
+  // PerLaneLobe's accuracies, normalized per lane; its domain, n_min >= 44, skips n = 10.
+  for (Variant variant : {Variant::precise, Variant::fast})
+    if (n >= 100)
+      add(variant == Variant::precise ? "pow_poly_perlane_precise" : "pow_poly_perlane_fast", "",
+          [=](benchmark::State& state) {
+            const PerLanePowerPoly power(n / 2.0, 2.0 * n, variant, Normalization::exact_coef);
+            std::vector<float> exponents =
+                uniform_inputs(std::log(n / 2.0f), std::log(2.0f * n), 2);
+            for (float& e : exponents) e = std::exp(e);
+            run_array(state, arch, t, exponents,
+                      [&](const float* x, const float* y, float* out) {
+                        power.eval(x, y, out, N);
+                      });
+          });
+  // The fast pow a speed-minded user writes for one material (kutlog::PowerPoly), at each
+  // lobe variant's accuracy, the normalization folded in as kutlog's.
+  for (Variant variant : {Variant::precise, Variant::fast})
+    add(variant == Variant::precise ? "pow_poly_precise" : "pow_poly_fast", "",
+        [=](benchmark::State& state) {
+          const PowerPoly power(n, variant, ref::blinn_phong_exact_coef(n));
+          run_array(state, arch, t, t, [&](const float* x, const float*, float* out) {
+            power.eval(x, out, N);
+          });
+        });
+  add("pow_precise", "", [=](benchmark::State& state) {
+    run_array(state, arch, t, t, [&](const float* x, const float*, float* out) {
+      blinn_phong_u10(x, out, N, exponent);
+    });
+  });
+  add("schlick", "", [=](benchmark::State& state) {
+    run_array(state, arch, t, t, [&](const float* x, const float*, float* out) {
+      schlick(x, out, N, exponent);
+    });
+  });
+}
+
+// The call shapes of a renderer's spans: the 4096 inputs through the array eval in spans of
+// `count` (the per-element cost of a span of that size), default normalization; then the same
+// spans through the stream API from cosines and N.L (a scanline's span: covered, no mask),
+// default options.
+inline void register_span_benchmarks(Arch arch) {
+  constexpr std::size_t N = kArrayLength;
+  const std::string arch_label(arch_name(arch));
   for (int k : {3, 5})
     for (Variant variant : {Variant::precise, Variant::fast})
       for (std::size_t count : kSpanCounts) {
@@ -171,8 +186,6 @@ inline void register_lobe_benchmarks(Arch arch) {
                     });
         });
       }
-  // The same spans through the stream API from cosines and N.L (a scanline's span: covered,
-  // no mask), default options.
   for (int k : {3, 5})
     for (std::size_t count : kSpanCounts) {
       const std::string name = "span/shade_cosines/n:1000/k:" + std::to_string(k) +
@@ -186,11 +199,16 @@ inline void register_lobe_benchmarks(Arch arch) {
                   });
       });
     }
-  // The stream API as a rasterizer calls it (examples/rasterizer): the 4096 inputs in tiles of
-  // 16x16 fragments, each covered but for a corner cut off by a triangle's edge (x + y < 8, 36
-  // pixels: of the 32 batches of 8 lanes, 1 empty and 7 mixed); from cosines and N.L, or from
-  // normals under one directional light and viewer (both +z, so that N.H is the t of the
-  // lobe's inputs).
+}
+
+// The stream API as a rasterizer calls it (examples/rasterizer): the 4096 inputs in tiles of
+// 16x16 fragments, each covered but for a corner cut off by a triangle's edge (x + y < 8, 36
+// pixels: of the 32 batches of 8 lanes, 1 empty and 7 mixed); from cosines and N.L, or from
+// normals under one directional light and viewer (both +z, so that N.H is the t of the
+// lobe's inputs).
+inline void register_tile_benchmarks(Arch arch) {
+  constexpr std::size_t N = kArrayLength;
+  const std::string arch_label(arch_name(arch));
   for (int k : {3, 5}) {
     const std::string at = "/n:1000/k:" + std::to_string(k) + "/count:256/arch:" + arch_label;
     const auto tiles = [=](benchmark::State& state, auto shade_tile) {
@@ -219,10 +237,22 @@ inline void register_lobe_benchmarks(Arch arch) {
       });
     });
   }
+}
+
+// Through the public array functions (kutlog/lobe.hpp), as users call them.
+inline void register_lobe_benchmarks(Arch arch) {
+  const std::string arch_label(arch_name(arch));
+  for (int n : kLobeExponents) {
+    const LobeRegistrar add{"/n:" + std::to_string(n), arch_label};
+    register_kutlog_lobes(arch, n, add);
+    register_pow_peers(arch, n, add);
+  }
+  register_span_benchmarks(arch);
+  register_tile_benchmarks(arch);
   benchmark::RegisterBenchmark(("lobe/copy/arch:" + arch_label).c_str(), [arch](benchmark::State& state) {
     const std::vector<float> t = uniform_inputs(0, 1);
     run_array(state, arch, t, t, [](const float* x, const float*, float* out) {
-      std::copy(x, x + N, out);
+      std::copy(x, x + kArrayLength, out);
     });
   });
 }

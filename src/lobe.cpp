@@ -355,6 +355,23 @@ CertifiedKernel fit_kernel(const ref::KutlogLobe& reference, float t_cut,
                            std::to_string(reference.Q()) + ") meets the bound of its variant");
 }
 
+// A variant's promise, times the tests' factor (src/lobe_setup_hook.hpp).
+Target target_of(Variant variant) {
+  const Target& promised = variant == Variant::fast ? kFastTarget : kPreciseTarget;
+  const double factor = detail::lobe_target_factor_for_tests.load(std::memory_order_relaxed);
+  return {promised.abs_error * factor, promised.epicenter_ulp * factor};
+}
+
+// The scalar path's pieces, if certified, with their certificate.
+template <class Pieces>
+bool keep_pieces(std::optional<detail::ScalarPiecesFitter::Fitted<Pieces>> fitted,
+                 Pieces& pieces, detail::KernelCertificate& certificate) {
+  if (!fitted) return false;
+  pieces = std::move(fitted->pieces);
+  certificate = {fitted->certified.abs_error, fitted->certified.epicenter_ulp};
+  return true;
+}
+
 [[noreturn]] void throw_coef_overflow(double n, int k, double Q, double coef) {
   // coef grows like n for large n: the largest n whose coef fits a float, from coef at 1e30.
   constexpr double kLargeN = 1e30;
@@ -404,26 +421,18 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
     for (Normalization normalization : {Normalization::none, Normalization::exact_coef})
       for (detail::Arithmetic arithmetic :
            {detail::Arithmetic::unfused, detail::Arithmetic::fused, detail::Arithmetic::scalar}) {
-        const Target& promised = variant == Variant::fast ? kFastTarget : kPreciseTarget;
-        const double factor = detail::lobe_target_factor_for_tests.load(std::memory_order_relaxed);
-        const Target target{promised.abs_error * factor, promised.epicenter_ulp * factor};
+        const Target target = target_of(variant);
         const int index = kernel_index(variant, normalization, arithmetic);
         const double scale = normalization == Normalization::exact_coef ? coef_exact_ : 1.0;
         // The scalar path: the pieces if certified (the faster form), else a kernel.
-        if (arithmetic == detail::Arithmetic::scalar) {
-          const auto keep = [&](auto& pieces, auto fitted) {
-            if (!fitted) return false;
-            pieces = std::move(fitted->pieces);
-            certificates_[index] = {fitted->certified.abs_error, fitted->certified.epicenter_ulp};
-            kernels_[index].t_cut = t_cut_;
-            return true;
-          };
-          if (variant == Variant::fast
-                  ? keep(fast_pieces_[int(normalization)],
-                         pieces_fitter.fit<detail::FastScalarPieces>(scale, target))
-                  : keep(precise_pieces_[int(normalization)],
-                         pieces_fitter.fit<detail::ScalarPieces>(scale, target)))
-            continue;
+        if (arithmetic == detail::Arithmetic::scalar &&
+            (variant == Variant::fast
+                 ? keep_pieces(pieces_fitter.fit<detail::FastScalarPieces>(scale, target),
+                               fast_pieces_[int(normalization)], certificates_[index])
+                 : keep_pieces(pieces_fitter.fit<detail::ScalarPieces>(scale, target),
+                               precise_pieces_[int(normalization)], certificates_[index]))) {
+          kernels_[index].t_cut = t_cut_;
+          continue;
         }
         const CertifiedKernel fitted =
             fit_kernel(reference, t_cut_, shape, polynomial_series, base_series, w_max, scale,

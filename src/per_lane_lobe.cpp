@@ -61,11 +61,136 @@ const FloatFit& base_fit(Variant variant) {
   return variant == Variant::fast ? fast : precise;
 }
 
+// The materials one PerLaneLobe covers, and its variant's target for each polynomial.
+struct LaneRange {
+  double n_min, n_max;
+  int k;
+  double Q;
+  double target;
+  double y_lo() const { return 1 / n_max; }
+  double y_hi() const { return 1 / n_min; }
+  // A fit that misses is never kept: the material is refused. Seen only for a range of n too
+  // wide for one polynomial in 1/n: c^2 / n changes its shape where ln(1/Q) / n passes 1,
+  // so tiny Q with n over many decades (Q = 1e-300, n in [1, 10^38]).
+  FloatFit fit_or_refuse(const char* what, const std::optional<FloatFit>& fit) const {
+    if (fit) return *fit;
+    throw std::invalid_argument("kutlog: n_max = " + std::to_string(n_max) +
+                                " is invalid with n_min = " + std::to_string(n_min) + " and Q = " +
+                                std::to_string(Q) + ": the range is too wide for one "
+                                "PerLaneLobe (its fit of " + what + " misses its target); "
+                                "split it over several PerLaneLobes");
+  }
+};
+
+// n H(1/n - y_center) = slope n + h_1, slope = h_0 - h_1 y_center: with a fused multiply-add,
+// rounded once. Precise, the slope is two floats (one would add its rounding, 2^-24 of c^2, to
+// H's); fast, one (the SIMD kernel's c^2 is one multiply-add). Kept where the line's own error
+// plus that rounding meets the target against c^2 on n even and log-even over the range (the
+// line's error is smooth; the rounding is bounded, not sampled). Unfused, its three roundings
+// could not leave H's error room.
+void fit_c_squared_line(detail::PerLaneKernel& kernel, const LaneRange& range, Variant variant) {
+  const double slope =
+      double(kernel.h[0]) - double(kernel.h[1]) * double(kernel.y_center);
+  const float slope_hi = float(slope);
+  const float slope_lo = variant == Variant::fast ? 0.0f : float(slope - double(slope_hi));
+  const double intercept = double(kernel.h[1]);
+  const double theta_k = ref::acos_of_root(range.Q, range.k);
+  const double n_min = range.n_min, n_max = range.n_max;
+  constexpr int kGridIntervals = 512;
+  bool meets_target = true;
+  for (int j = 0; j <= kGridIntervals && meets_target; ++j)
+    for (double n : {n_min + (n_max - n_min) * j / kGridIntervals,
+                     n_min * std::pow(n_max / n_min, double(j) / kGridIntervals)}) {
+      const double x = double(std::clamp(float(n), float(n_min), float(n_max)));
+      const double theta_n = ref::acos_of_root(range.Q, x);
+      const double exact = theta_k * theta_k / (theta_n * theta_n);
+      const double low = double(slope_lo) * x + intercept;
+      const double line = double(slope_hi) * x + low;
+      const double rounding = 0x1p-24 * (std::fabs(line) + std::fabs(low)) * (1 + 0x1p-20);
+      if (!(std::fabs(line - exact) + rounding <= range.target * exact)) meets_target = false;
+    }
+  kernel.in_n = meets_target;  // and coef in n below
+  kernel.c_squared_slope = slope_hi;
+  kernel.c_squared_slope_lo = slope_lo;
+}
+
+// c^2 / n = theta_k^2 y / acos(Q^y)^2, analytic in y; a line in n where it meets the target.
+void fit_c_squared(detail::PerLaneKernel& kernel, const LaneRange& range, Variant variant) {
+  const double theta_k = ref::acos_of_root(range.Q, range.k);
+  const FloatFit h = range.fit_or_refuse("c^2 / n", fit_float(
+      [&](Real y) {
+        const double theta_n = ref::acos_of_root(range.Q, double(1 / y));
+        return Real(theta_k * theta_k) * y / Real(theta_n * theta_n);
+      },
+      range.y_lo(), range.y_hi(), kernel.y_center, range.target));
+  kernel.h_degree = h.degree;
+  kernel.h = h.coefficients;
+  if (h.degree == 1) fit_c_squared_line(kernel, range, variant);
+}
+
+// coef / n = y coef(1/y), analytic in y; in n (slope n + C(n)) where that is cheaper.
+void fit_coef(detail::PerLaneKernel& kernel, const LaneRange& range) {
+  const int k = range.k;
+  const double Q = range.Q, n_min = range.n_min, n_max = range.n_max;
+  const FloatFit coef = range.fit_or_refuse("coef / n", fit_float(
+      [&](Real y) { return y * Real(ref::coef_exact(double(1 / y), k, Q)); }, range.y_lo(),
+      range.y_hi(), kernel.y_center, range.target));
+  kernel.k_degree = coef.degree;
+  kernel.coef_k = coef.coefficients;
+  // Up to n_max = 2^16 n_min: the fit's check sums its series in double, within 2^-53 n_max /
+  // n_min of coef at n_min (relative), which must stay far below the target.
+  kernel.in_n = kernel.in_n && n_max <= 0x1p16 * n_min;
+  if (!kernel.in_n) return;
+  // coef = slope n + C(n), slope the secant's: C, a small part of coef, is not worth
+  // centering. Kept where it takes no more operations than the reciprocal, its Newton step,
+  // y - y_center and n K(.), else the kernel keeps those.
+  const auto coef_of = [&](Real n) { return Real(ref::coef_exact(double(n), k, Q)); };
+  const float slope = float((coef_of(n_max) - coef_of(n_min)) / (n_max - n_min));
+  const std::optional<FloatFit> coef_n = fit_float(coef_of, n_min, n_max, 0, range.target, slope);
+  kernel.in_n = coef_n && coef_n->degree + 1 <= coef.degree + 5;
+  if (kernel.in_n) {
+    kernel.coef_n_slope = coef_n->slope;
+    kernel.coef_n_degree = coef_n->degree;
+    kernel.coef_n = coef_n->coefficients;
+  }
+}
+
+// theta^2 / w = (2 asin(sqrt(w/2)))^2 / w, analytic up to w = 2.
+void fit_angle(detail::PerLaneKernel& kernel, const LaneRange& range, double w_max) {
+  const FloatFit g = range.fit_or_refuse("acos(t)^2 / (1 - t)", fit_float(
+      [](Real w) {
+        if (w < 1e-30L) return Real(2);
+        const Real theta = 2 * std::asin(std::sqrt(w / 2));
+        return theta * theta / w;
+      },
+      0, w_max, 0, range.target));
+  kernel.g_degree = g.degree;
+  kernel.g = g.coefficients;
+  kernel.w_clamped = !std::all_of(g.coefficients.begin(), g.coefficients.begin() + g.degree + 1,
+                                  [](float coefficient) { return coefficient > 0; });
+}
+
+// The base R and the power: at k = 1 there is no power, the base in float, one fused
+// multiply-add, is rounded once as in double (FMA archs; SSE4.1 adds its product's rounding,
+// within the bound). Up to kCompensatedMaxK the power's own roundings, about k, stay within the
+// epicenter bound.
+void set_base_and_power(detail::PerLaneKernel& kernel, int k, Variant variant) {
+  kernel.r_degree = base_fit(variant).degree;
+  kernel.r = base_fit(variant).coefficients;
+  using Power = detail::PerLaneKernel::Power;
+  kernel.power = variant == Variant::fast || k == 1 ? Power::in_float
+                 : k <= kCompensatedMaxK           ? Power::compensated
+                                                   : Power::in_double;
+  const double margin = variant == Variant::fast ? kFastCutMargin : kPreciseCutMargin;
+  kernel.v_cut = float(double(kVCut) * (1 - margin));
+}
+
 // One variant's kernel: every polynomial fitted to the variant's target, so the fast one takes
 // the lowest degrees (at n in [500, 2000], coef = slope n + a constant) and its peak its own
 // bound (kPerLaneFastPeakError).
 detail::PerLaneKernel fit_kernel(double n_min, double n_max, int k, double Q, Variant variant) {
-  const double target = variant == Variant::fast ? kFastTarget : kPreciseTarget;
+  const LaneRange range{n_min, n_max, k, Q,
+                        variant == Variant::fast ? kFastTarget : kPreciseTarget};
   detail::PerLaneKernel kernel;
   kernel.k = k;
   kernel.n_min = float(n_min);
@@ -76,103 +201,11 @@ detail::PerLaneKernel fit_kernel(double n_min, double n_max, int k, double Q, Va
   const ref::KutlogLobe widest(n_min, k, Q);
   const double w_max = std::max(1 - std::cos(widest.cutoff_angle()), 1e-6);
   kernel.w_limit = float(w_max * (1 + 0x1p-10));
-  const double y_lo = 1 / n_max, y_hi = 1 / n_min;
-  kernel.y_center = float(0.5 * (y_lo + y_hi));
-  const double theta_k = ref::acos_of_root(Q, k);
-  // A fit that misses is never kept: the material is refused. Seen only for a range of n too
-  // wide for one polynomial in 1/n: c^2 / n changes its shape where ln(1/Q) / n passes 1,
-  // so tiny Q with n over many decades (Q = 1e-300, n in [1, 10^38]).
-  const auto fit_or_refuse = [&](const char* what, const std::optional<FloatFit>& fit) {
-    if (fit) return *fit;
-    throw std::invalid_argument("kutlog: n_max = " + std::to_string(n_max) +
-                                " is invalid with n_min = " + std::to_string(n_min) + " and Q = " +
-                                std::to_string(Q) + ": the range is too wide for one "
-                                "PerLaneLobe (its fit of " + what + " misses its target); "
-                                "split it over several PerLaneLobes");
-  };
-  // c^2 / n = theta_k^2 y / acos(Q^y)^2 and coef / n = y coef(1/y): analytic in y.
-  const FloatFit h = fit_or_refuse("c^2 / n", fit_float(
-      [&](Real y) {
-        const double theta_n = ref::acos_of_root(Q, double(1 / y));
-        return Real(theta_k * theta_k) * y / Real(theta_n * theta_n);
-      },
-      y_lo, y_hi, kernel.y_center, target));
-  kernel.h_degree = h.degree;
-  kernel.h = h.coefficients;
-  if (h.degree == 1) {
-    // n H(1/n - y_center) = slope n + h_1, slope = h_0 - h_1 y_center: with a fused
-    // multiply-add, rounded once. Precise, the slope is two floats (one would add its
-    // rounding, 2^-24 of c^2, to H's); fast, one (the SIMD kernel's c^2 is one multiply-add).
-    // Kept where the line's own error plus that rounding meets the target against c^2 on n
-    // even and log-even over the range (the line's error is smooth; the rounding is bounded,
-    // not sampled). Unfused, its three roundings could not leave H's error room.
-    const double slope =
-        double(h.coefficients[0]) - double(h.coefficients[1]) * double(kernel.y_center);
-    const float slope_hi = float(slope);
-    const float slope_lo = variant == Variant::fast ? 0.0f : float(slope - double(slope_hi));
-    const double intercept = double(h.coefficients[1]);
-    constexpr int kGridIntervals = 512;
-    bool meets_target = true;
-    for (int j = 0; j <= kGridIntervals && meets_target; ++j)
-      for (double n : {n_min + (n_max - n_min) * j / kGridIntervals,
-                       n_min * std::pow(n_max / n_min, double(j) / kGridIntervals)}) {
-        const double x = double(std::clamp(float(n), float(n_min), float(n_max)));
-        const double theta_n = ref::acos_of_root(Q, x);
-        const double exact = theta_k * theta_k / (theta_n * theta_n);
-        const double low = double(slope_lo) * x + intercept;
-        const double line = double(slope_hi) * x + low;
-        const double rounding = 0x1p-24 * (std::fabs(line) + std::fabs(low)) * (1 + 0x1p-20);
-        if (!(std::fabs(line - exact) + rounding <= target * exact)) meets_target = false;
-      }
-    kernel.in_n = meets_target;  // and coef in n below
-    kernel.c_squared_slope = slope_hi;
-    kernel.c_squared_slope_lo = slope_lo;
-  }
-  const FloatFit coef = fit_or_refuse("coef / n", fit_float(
-      [&](Real y) { return y * Real(ref::coef_exact(double(1 / y), k, Q)); }, y_lo, y_hi,
-      kernel.y_center, target));
-  kernel.k_degree = coef.degree;
-  kernel.coef_k = coef.coefficients;
-  // Up to n_max = 2^16 n_min: the fit's check sums its series in double, within 2^-53 n_max /
-  // n_min of coef at n_min (relative), which must stay far below the target.
-  kernel.in_n = kernel.in_n && n_max <= 0x1p16 * n_min;
-  if (kernel.in_n) {
-    // coef = slope n + C(n), slope the secant's: C, a small part of coef, is not worth
-    // centering. Kept where it takes no more operations than the reciprocal, its Newton step,
-    // y - y_center and n K(.), else the kernel keeps those.
-    const auto coef_of = [&](Real n) { return Real(ref::coef_exact(double(n), k, Q)); };
-    const float slope = float((coef_of(n_max) - coef_of(n_min)) / (n_max - n_min));
-    const std::optional<FloatFit> coef_n = fit_float(coef_of, n_min, n_max, 0, target, slope);
-    kernel.in_n = coef_n && coef_n->degree + 1 <= coef.degree + 5;
-    if (kernel.in_n) {
-      kernel.coef_n_slope = coef_n->slope;
-      kernel.coef_n_degree = coef_n->degree;
-      kernel.coef_n = coef_n->coefficients;
-    }
-  }
-  // theta^2 / w = (2 asin(sqrt(w/2)))^2 / w, analytic up to w = 2.
-  const FloatFit g = fit_or_refuse("acos(t)^2 / (1 - t)", fit_float(
-      [](Real w) {
-        if (w < 1e-30L) return Real(2);
-        const Real theta = 2 * std::asin(std::sqrt(w / 2));
-        return theta * theta / w;
-      },
-      0, w_max, 0, target));
-  kernel.g_degree = g.degree;
-  kernel.g = g.coefficients;
-  kernel.w_clamped = !std::all_of(g.coefficients.begin(), g.coefficients.begin() + g.degree + 1,
-                                  [](float coefficient) { return coefficient > 0; });
-  kernel.r_degree = base_fit(variant).degree;
-  kernel.r = base_fit(variant).coefficients;
-  // At k = 1 there is no power: the base in float, one fused multiply-add, is rounded once
-  // as in double (FMA archs; SSE4.1 adds its product's rounding, within the bound). Up to
-  // kCompensatedMaxK the power's own roundings, about k, stay within the epicenter bound.
-  using Power = detail::PerLaneKernel::Power;
-  kernel.power = variant == Variant::fast || k == 1 ? Power::in_float
-                 : k <= kCompensatedMaxK           ? Power::compensated
-                                                   : Power::in_double;
-  const double margin = variant == Variant::fast ? kFastCutMargin : kPreciseCutMargin;
-  kernel.v_cut = float(double(kVCut) * (1 - margin));
+  kernel.y_center = float(0.5 * (range.y_lo() + range.y_hi()));
+  fit_c_squared(kernel, range, variant);
+  fit_coef(kernel, range);
+  fit_angle(kernel, range, w_max);
+  set_base_and_power(kernel, k, variant);
   kernel.convert_for_scalar();
   return kernel;
 }

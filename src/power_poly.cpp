@@ -62,6 +62,38 @@ std::vector<Real> fit_exp2(double allowed, int exp_degree) {
       allowed, exp_degree - 1);
 }
 
+// t is raised to t_floor, where t^n_min = bound / 4: every lane's y there is a unit or more
+// below y_zero, cut whatever the log's error. t_floor >= 1/sqrt(2): x = t - 1 stays in the
+// log's short domain, no exponent taken apart (PowerPoly's decomposed form).
+void validate_per_lane_range(double n_min, double n_max, double bound) {
+  ref::validate_exponent(n_min, "n_min");
+  ref::validate_exponent(n_max, "n_max");
+  const double n_min_lowest = 2 * std::log2(4 / bound);
+  if (!(n_min >= n_min_lowest))
+    throw std::invalid_argument("kutlog: n_min = " + std::to_string(n_min) +
+                                " is invalid; PerLanePowerPoly needs n_min >= " +
+                                std::to_string(int(n_min_lowest)) + " for this variant");
+  if (!(n_max >= n_min && n_max <= FLT_MAX))
+    throw std::invalid_argument("kutlog: n_max = " + std::to_string(n_max) +
+                                " is invalid; n_max must be in [n_min, FLT_MAX]");
+}
+
+// scale(n) = slope n + S(n), as PerLaneLobe's coef, within half the bound, where S's degree is
+// at most 3; else the closed form and its reciprocal, five operations.
+void fit_scale(detail::PerLanePowerPolyKernel& k, double n_min, double n_max, double bound) {
+  using Scale = detail::PerLanePowerPolyKernel::Scale;
+  const auto coef = [](Real n) { return Real(ref::blinn_phong_exact_coef(double(n))); };
+  const float slope = n_max > n_min ? float((coef(n_max) - coef(n_min)) / (n_max - n_min)) : 0.0f;
+  const std::optional<detail::FloatFit> scale =
+      detail::fit_float(coef, n_min, n_max, 0, bound / 2, slope);
+  k.scale_form = scale && scale->degree <= 3 ? Scale::fitted : Scale::reciprocal;
+  if (k.scale_form == Scale::fitted) {
+    k.scale_slope = scale->slope;
+    k.scale_degree = scale->degree;
+    std::copy_n(scale->coefficients.begin(), scale->degree + 1, k.scale.begin());
+  }
+}
+
 }  // namespace
 
 PowerPoly::PowerPoly(double n, Variant variant, double scale) {
@@ -104,21 +136,9 @@ PowerPoly::PowerPoly(double n, Variant variant, double scale) {
 
 PerLanePowerPoly::PerLanePowerPoly(double n_min, double n_max, Variant variant,
                                    Normalization normalization) {
-  ref::validate_exponent(n_min, "n_min");
-  ref::validate_exponent(n_max, "n_max");
   // PerLaneLobe's bounds, against which it runs.
   const double bound = variant == Variant::precise ? 0x1p-20 : 0x1p-16;
-  // t is raised to t_floor, where t^n_min = bound / 4: every lane's y there is a unit or more
-  // below y_zero, cut whatever the log's error. t_floor >= 1/sqrt(2): x = t - 1 stays in the
-  // log's short domain, no exponent taken apart (PowerPoly's decomposed form).
-  const double n_min_lowest = 2 * std::log2(4 / bound);
-  if (!(n_min >= n_min_lowest))
-    throw std::invalid_argument("kutlog: n_min = " + std::to_string(n_min) +
-                                " is invalid; PerLanePowerPoly needs n_min >= " +
-                                std::to_string(int(n_min_lowest)) + " for this variant");
-  if (!(n_max >= n_min && n_max <= FLT_MAX))
-    throw std::invalid_argument("kutlog: n_max = " + std::to_string(n_max) +
-                                " is invalid; n_max must be in [n_min, FLT_MAX]");
+  validate_per_lane_range(n_min, n_max, bound);
   detail::require_runnable_arch();
   detail::PerLanePowerPolyKernel& k = kernel_;
   k.n_min = float(n_min);
@@ -151,22 +171,7 @@ PerLanePowerPoly::PerLanePowerPoly(double n_min, double n_max, Variant variant,
   for (std::size_t i = 0; i < log.size(); ++i) k.log[i] = float(log[i]);
   k.exp[0] = 1;
   for (std::size_t i = 0; i < exp.size(); ++i) k.exp[i + 1] = float(exp[i]);
-  using Scale = detail::PerLanePowerPolyKernel::Scale;
-  if (normalization == Normalization::exact_coef) {
-    // scale(n) = slope n + S(n), as PerLaneLobe's coef, within half the bound, where S's
-    // degree is at most 3; else the closed form and its reciprocal, five operations.
-    const auto coef = [](Real n) { return Real(ref::blinn_phong_exact_coef(double(n))); };
-    const float slope =
-        n_max > n_min ? float((coef(n_max) - coef(n_min)) / (n_max - n_min)) : 0.0f;
-    const std::optional<detail::FloatFit> scale =
-        detail::fit_float(coef, n_min, n_max, 0, bound / 2, slope);
-    k.scale_form = scale && scale->degree <= 3 ? Scale::fitted : Scale::reciprocal;
-    if (k.scale_form == Scale::fitted) {
-      k.scale_slope = scale->slope;
-      k.scale_degree = scale->degree;
-      std::copy_n(scale->coefficients.begin(), scale->degree + 1, k.scale.begin());
-    }
-  }
+  if (normalization == Normalization::exact_coef) fit_scale(k, n_min, n_max, bound);
 }
 
 }  // namespace kutlog

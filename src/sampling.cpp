@@ -153,34 +153,14 @@ Fit fit_cells(const ValueAt& value_at, double scale, Weight weight, detail::Samp
   return fit;
 }
 
-}  // namespace
-
-LobeSampler::LobeSampler(double n, int k, double Q, LobeUse use)
-    : n_(n), Q_(Q), fit_error_(0), use_(use) {
-  const ref::PolarAngleDistribution polar(n, k, Q, use);  // validates n, k, Q
-  detail::require_runnable_arch();
-  limit_ = polar.limit();
-  const double peak = polar.solid_angle_density(0);
-  if (!(peak <= FLT_MAX)) {
-    char message[160];
-    std::snprintf(message, sizeof message,
-                  "kutlog::LobeSampler: n = %g makes the peak pdf %g overflow a float; n must be "
-                  "below about 1e37 (by k and Q)",
-                  n, peak);
-    throw std::invalid_argument(message);
-  }
-  kernel_.k = k;
-  kernel_.cosine_weighted = use == LobeUse::microfacet;
-  kernel_.c = float(polar.lobe().c());
-  kernel_.limit = float(largest_float_at_most(limit_));
-  kernel_.density_scale = float(peak);
-  // The coarse fit interpolates the reference; the rows' fits interpolate the coarse fit's
-  // full series (degree 12, within about 1e-10 G of the reference), which costs no
-  // inverse-CDF solve: the setup solves about 400 times, not 3000. Consecutive solves are a
-  // cell's nodes in order, then the next cell's: the secant through the last two roots
-  // guesses the next one closely, which the solve keeps if it falls inside its bracket.
+// The coarse fit interpolates the reference; the rows' fits interpolate the coarse fit's full
+// series (degree 12, within about 1e-10 G of the reference), which costs no inverse-CDF solve:
+// the setup solves about 400 times, not 3000. Consecutive solves are a cell's nodes in order,
+// then the next cell's: the secant through the last two roots guesses the next one closely,
+// which the solve keeps if it falls inside its bracket.
+Fit fit_coarse(const ref::PolarAngleDistribution& polar, double limit, float* coarse) {
   double last_xi[2] = {0, 0}, last_theta[2] = {0, 0};
-  const Fit coarse = fit_cells(
+  return fit_cells(
       [&](bool lower, double argument) {
         const double xi = lower ? argument : 1 - argument;
         const double slope = (last_theta[1] - last_theta[0]) / (last_xi[1] - last_xi[0]);
@@ -189,38 +169,70 @@ LobeSampler::LobeSampler(double n, int k, double Q, LobeUse use)
         last_xi[1] = xi, last_theta[1] = theta;
         return theta;
       },
-      limit_, Weight::sqrt_u1_in_lower_cells, K::kCoarse, K::kCoarseMaxDegree,
-      {1, K::kCoarseStride, kernel_.coarse.data()});
-  // The rows: the haversine q = sin^2(theta/2), then the pdf of the direction that fit gives
-  // (theta = 2 asin(sqrt(q)) as stored), so that the pdf is that of the returned direction to
-  // within its own fit, not also the first fit's. Their cells are all of w = 1 - u1 (the
-  // argument); u1 <= 1/2 falls in the top binade.
-  const double half_limit = std::sin(0.5 * double(kernel_.limit));
+      limit, Weight::sqrt_u1_in_lower_cells, K::kCoarse, K::kCoarseMaxDegree,
+      {1, K::kCoarseStride, coarse});
+}
+
+// The rows: the haversine q = sin^2(theta/2), then the pdf of the direction that fit gives
+// (theta = 2 asin(sqrt(q)) as stored), so that the pdf is that of the returned direction to
+// within its own fit, not also the first fit's. Their cells are all of w = 1 - u1 (the
+// argument); u1 <= 1/2 falls in the top binade. The larger of the two fits' errors.
+double fit_rows(const ref::PolarAngleDistribution& polar, const Fit& coarse, double peak,
+                detail::SamplerKernel& kernel) {
+  const double half_limit = std::sin(0.5 * double(kernel.limit));
   const int half_exponent = std::ilogb(half_limit) + 1;  // sin(G/2) < 2^half_exponent
-  kernel_.haversine_scale = std::ldexp(1.0f, 2 * half_exponent);
-  kernel_.sine_scale = std::ldexp(1.0f, half_exponent + 1);
-  kernel_.haversine_limit =
-      float(largest_float_at_most(half_limit * half_limit / kernel_.haversine_scale));
-  const Storage haversine{K::kRowStride, 1, kernel_.rows.data()};
-  const Storage pdf{K::kRowStride, 1, kernel_.rows.data() + K::kRowDegree + 1};
+  kernel.haversine_scale = std::ldexp(1.0f, 2 * half_exponent);
+  kernel.sine_scale = std::ldexp(1.0f, half_exponent + 1);
+  kernel.haversine_limit =
+      float(largest_float_at_most(half_limit * half_limit / kernel.haversine_scale));
+  const Storage haversine{K::kRowStride, 1, kernel.rows.data()};
+  const Storage pdf{K::kRowStride, 1, kernel.rows.data() + K::kRowDegree + 1};
   const Fit haversine_fit = fit_cells(
       [&](bool, double w) {
         const double half = 0.5 * (w >= 0.5 ? coarse.theta(K::kCoarse, true, 1 - w)
                                              : coarse.theta(K::kCoarse, false, w));
-        return std::sin(half) * std::sin(half) / kernel_.haversine_scale;
+        return std::sin(half) * std::sin(half) / kernel.haversine_scale;
       },
-      half_limit * half_limit / kernel_.haversine_scale, Weight::twice_u1_below_half,
+      half_limit * half_limit / kernel.haversine_scale, Weight::twice_u1_below_half,
       K::kRowCells, K::kRowDegree, haversine);
   const Fit pdf_fit = fit_cells(
       [&](bool lower, double argument) {
-        const double q = kernel_.haversine_scale *
+        const double q = kernel.haversine_scale *
                          stored_value(K::kRowCells, Weight::twice_u1_below_half, K::kRowDegree,
                                       haversine, lower, argument);
         return polar.solid_angle_density(2 * std::asin(std::sqrt(std::clamp(q, 0.0, 1.0))));
       },
       peak, Weight::none, K::kRowCells, K::kRowDegree, pdf);
+  return std::max(haversine_fit.error, pdf_fit.error);
+}
+
+[[noreturn]] void throw_peak_overflow(double n, double peak) {
+  char message[160];
+  std::snprintf(message, sizeof message,
+                "kutlog::LobeSampler: n = %g makes the peak pdf %g overflow a float; n must be "
+                "below about 1e37 (by k and Q)",
+                n, peak);
+  throw std::invalid_argument(message);
+}
+
+}  // namespace
+
+LobeSampler::LobeSampler(double n, int k, double Q, LobeUse use)
+    : n_(n), Q_(Q), fit_error_(0), use_(use) {
+  const ref::PolarAngleDistribution polar(n, k, Q, use);  // validates n, k, Q
+  detail::require_runnable_arch();
+  limit_ = polar.limit();
+  const double peak = polar.solid_angle_density(0);
+  if (!(peak <= FLT_MAX)) throw_peak_overflow(n, peak);
+  kernel_.k = k;
+  kernel_.cosine_weighted = use == LobeUse::microfacet;
+  kernel_.c = float(polar.lobe().c());
+  kernel_.limit = float(largest_float_at_most(limit_));
+  kernel_.density_scale = float(peak);
+  const Fit coarse = fit_coarse(polar, limit_, kernel_.coarse.data());
+  const double rows_error = fit_rows(polar, coarse, peak, kernel_);
   kernel_.coarse_degree = coarse.degree;
-  fit_error_ = std::max({coarse.error, haversine_fit.error, pdf_fit.error});
+  fit_error_ = std::max(coarse.error, rows_error);
 }
 
 }  // namespace kutlog

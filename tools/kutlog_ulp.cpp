@@ -206,151 +206,183 @@ int measure_power_poly(const std::vector<kutlog::Arch>& archs,
   return 0;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+// The command line's choices.
+struct UlpOptions {
   std::vector<std::string> functions = math_function_names();
-  std::string function_domains;
-  for (const kutlog::AccuracyBound& bound : kutlog::kAccuracyBounds)
-    function_domains += fmt::format("\n  {} {}", bound.function, bound.domain);
-  CLI::App app(
-      "Measure the ULP error of kutlog's SIMD math kernels over every float of their domains,\n"
-      "per arch, against glibc's double-precision functions. Functions:" + function_domains +
-      "\n--function kutlog measures the F_kutlog lobe kernels instead, over every float t in\n"
-      "[-1, 1], for each --n, --k, --q: max_abs_err relative to the lobe's peak (1, or coef for\n"
-      "kutlog_normalized), max_ulp_epicenter where the lobe is >= 0.6 of its peak.\n"
-      "--function pow_poly measures kutlog::PowerPoly, the benchmarks' polynomial t^n, in the\n"
-      "same units for each --n and --variant; --function pow_poly_perlane its per-lane form,\n"
-      "kutlog::PerLanePowerPoly, on [n/2, 2n] (n/2 >= 44 precise, 36 fast).",
-      "kutlog-ulp");
   std::vector<std::string> arch_names{"all"};
   std::string format_name = "text";
   std::uint64_t random_pairs = 10'000'000;
   unsigned threads = 0;
-  app.add_option("--function", functions, "Functions, comma-separated")
+  std::vector<std::string> variants{"precise", "fast"};
+  std::vector<std::string> n_list{"k+1", "10", "100", "1000", "10000"};
+  std::vector<int> k_list{1, 2, 3, 4, 5};
+  std::vector<double> q_list{0.1, 0.5, 0.9};
+  bool profile = false, summary = false;
+};
+
+std::string ulp_description() {
+  std::string function_domains;
+  for (const kutlog::AccuracyBound& bound : kutlog::kAccuracyBounds)
+    function_domains += fmt::format("\n  {} {}", bound.function, bound.domain);
+  return "Measure the ULP error of kutlog's SIMD math kernels over every float of their domains,\n"
+         "per arch, against glibc's double-precision functions. Functions:" + function_domains +
+         "\n--function kutlog measures the F_kutlog lobe kernels instead, over every float t in\n"
+         "[-1, 1], for each --n, --k, --q: max_abs_err relative to the lobe's peak (1, or coef for\n"
+         "kutlog_normalized), max_ulp_epicenter where the lobe is >= 0.6 of its peak.\n"
+         "--function pow_poly measures kutlog::PowerPoly, the benchmarks' polynomial t^n, in the\n"
+         "same units for each --n and --variant; --function pow_poly_perlane its per-lane form,\n"
+         "kutlog::PerLanePowerPoly, on [n/2, 2n] (n/2 >= 44 precise, 36 fast).";
+}
+
+void add_ulp_options(CLI::App& app, UlpOptions& o) {
+  app.add_option("--function", o.functions, "Functions, comma-separated")
       ->delimiter(',')
       ->capture_default_str();
   std::string compiled_names;
   for (kutlog::Arch arch : kutlog::kCompiledArchs)
     compiled_names += (compiled_names.empty() ? "" : ", ") + std::string(kutlog::arch_name(arch));
-  app.add_option("--arch", arch_names,
+  app.add_option("--arch", o.arch_names,
                  "Archs, comma-separated (" + compiled_names + "), all, or active (the dispatched one)")
       ->delimiter(',')
       ->capture_default_str();
-  add_format_option(app, format_name);
-  std::vector<std::string> variants{"precise", "fast"};
-  std::vector<std::string> n_list{"k+1", "10", "100", "1000", "10000"};
-  std::vector<int> k_list{1, 2, 3, 4, 5};
-  std::vector<double> q_list{0.1, 0.5, 0.9};
-  app.add_option("--variant", variants, "kutlog: precise, fast (comma-separated)")
+  add_format_option(app, o.format_name);
+  app.add_option("--variant", o.variants, "kutlog: precise, fast (comma-separated)")
       ->delimiter(',')
       ->check(CLI::IsMember({"precise", "fast"}))
       ->capture_default_str();
-  app.add_option("--n", n_list, "kutlog: exponents n (real > 0, or k+1), comma-separated")
+  app.add_option("--n", o.n_list, "kutlog: exponents n (real > 0, or k+1), comma-separated")
       ->delimiter(',')
       ->capture_default_str();
-  app.add_option("--k", k_list, "kutlog: powers k, comma-separated")->delimiter(',')->capture_default_str();
-  app.add_option("--q", q_list, "kutlog: anchors Q, comma-separated")->delimiter(',')->capture_default_str();
-  bool profile = false;
-  app.add_flag("--profile", profile,
+  app.add_option("--k", o.k_list, "kutlog: powers k, comma-separated")->delimiter(',')->capture_default_str();
+  app.add_option("--q", o.q_list, "kutlog: anchors Q, comma-separated")->delimiter(',')->capture_default_str();
+  app.add_flag("--profile", o.profile,
                "Instead of one row per sweep, the maximal error per input bucket (one function; "
                "for tools/plot/kutlog_figures.py --figure ulp)");
-  bool summary = false;
-  app.add_flag("--summary", summary,
+  app.add_flag("--summary", o.summary,
                "One row per kernel: the maximum over the archs (and pow's exponent sets), beside "
                "the promise of its name and the bound of kutlog/accuracy.hpp");
-  app.add_option("--pow-random", random_pairs, "Random (x, y) pairs for pow")->capture_default_str();
-  app.add_option("--threads", threads, "Threads (0: every core)")->capture_default_str();
+  app.add_option("--pow-random", o.random_pairs, "Random (x, y) pairs for pow")->capture_default_str();
+  app.add_option("--threads", o.threads, "Threads (0: every core)")->capture_default_str();
+}
 
-  return run_tool(app, argc, argv, [&] {
-    std::vector<kutlog::Arch> archs;
-    for (const std::string& name : arch_names) {
-      if (name == "all") {
-        archs = kutlog::supported_archs();
-        break;
-      }
-      if (name == "active") {  // what the array functions run on here
-        archs.push_back(kutlog::active_arch());
+// --arch: names, "all" or "active", each supported here.
+std::vector<kutlog::Arch> selected_archs(const std::vector<std::string>& arch_names) {
+  std::vector<kutlog::Arch> archs;
+  for (const std::string& name : arch_names) {
+    if (name == "all") {
+      archs = kutlog::supported_archs();
+      break;
+    }
+    if (name == "active") {  // what the array functions run on here
+      archs.push_back(kutlog::active_arch());
+      continue;
+    }
+    archs.push_back(kutlog::parse_arch(name));
+  }
+  for (kutlog::Arch arch : archs)
+    if (!kutlog::arch_supported(arch))
+      throw std::invalid_argument("--arch " + std::string(kutlog::arch_name(arch)) +
+                                  " is not supported by this machine");
+  return archs;
+}
+
+void validate_math_functions(const UlpOptions& o) {
+  for (const std::string& name : o.functions)
+    if (name != "pow" && !find_unary_function(name))
+      throw std::invalid_argument("unknown function '" + name + "'; valid: " +
+                                  fmt::format("{}", fmt::join(math_function_names(), ", ")) +
+                                  ", kutlog, pow_poly, pow_poly_perlane");
+  if (o.profile && o.functions.size() != 1)
+    throw std::invalid_argument("--profile measures one --function at a time");
+  if (o.profile && o.summary) throw std::invalid_argument("--profile and --summary exclude each other");
+}
+
+// One row per math function and arch (pow: per exponent set).
+std::vector<Row> sweep_math_functions(const std::vector<kutlog::Arch>& archs, const UlpOptions& o) {
+  std::vector<Row> rows;
+  for (kutlog::Arch arch : archs) {
+    const kutlog::inspect::ScopedArch forced(arch);  // unsupported: a clear error, exit 1
+    const std::string arch_label(kutlog::arch_name(arch));
+    for (const std::string& name : o.functions) {
+      SweepOptions options;
+      options.threads = o.threads;
+      const auto add_row = [&](std::string function, const auto& sweep) {
+        Row& row = rows.emplace_back();
+        row.function = std::move(function), row.arch = arch_label, row.variant = "precise";
+        options.profile = o.profile ? &row.profile : nullptr;
+        // Buckets as the figure's x axis: logarithmic for the domains spanning decades.
+        options.profile_linear_in_value = name != "log" && name != "pow";
+        options.progress_label = row.function + " " + arch_label;
+        row.stats = sweep(options);
+      };
+      if (name != "pow") {
+        const UnaryFunction& function = *find_unary_function(name);
+        add_row(name, [&](const SweepOptions& so) {
+          return sweep_unary(function, function.domain_lo, function.domain_hi, so);
+        });
         continue;
       }
-      archs.push_back(kutlog::parse_arch(name));
+      for (float y : kPowSweepExponents)
+        add_row(fmt::format("pow[y={:g}]", y),
+                [&](const SweepOptions& so) { return sweep_pow_exponent(y, so); });
+      if (!o.profile)
+        add_row(fmt::format("pow[random {}]", o.random_pairs),
+                [&](const SweepOptions& so) { return sweep_pow_random(o.random_pairs, 1, so); });
     }
-    for (kutlog::Arch arch : archs)
-      if (!kutlog::arch_supported(arch))
-        throw std::invalid_argument("--arch " + std::string(kutlog::arch_name(arch)) +
-                                    " is not supported by this machine");
-    const bool lobes = std::find(functions.begin(), functions.end(), "kutlog") != functions.end();
-    if (lobes && functions.size() > 1)
-      throw std::invalid_argument("--function kutlog measures the lobes; give it alone");
-    if (lobes) {
-      for (const std::string& n : n_list) exponent_of(n, 1);  // validates before any sweep
-      return measure_lobes(archs, variants, n_list, k_list, q_list, threads, parse_format(format_name));
-    }
-    for (const char* power : {"pow_poly", "pow_poly_perlane"})
-      if (std::find(functions.begin(), functions.end(), power) != functions.end()) {
-        if (functions.size() > 1)
-          throw std::invalid_argument(fmt::format("--function {} measures a polynomial pow; give it alone",
-                                                  power));
-        for (const std::string& n : n_list) exponent_of(n, 1);
-        return measure_power_poly(archs, variants, n_list, power == std::string("pow_poly_perlane"),
-                                  parse_format(format_name));
-      }
-    for (const std::string& name : functions)
-      if (name != "pow" && !find_unary_function(name))
-        throw std::invalid_argument("unknown function '" + name + "'; valid: " +
-                                    fmt::format("{}", fmt::join(math_function_names(), ", ")) +
-                                    ", kutlog, pow_poly, pow_poly_perlane");
-    if (profile && functions.size() != 1)
-      throw std::invalid_argument("--profile measures one --function at a time");
-    if (profile && summary) throw std::invalid_argument("--profile and --summary exclude each other");
+  }
+  return rows;
+}
 
-    std::vector<Row> rows;
-    for (kutlog::Arch arch : archs) {
-      const kutlog::inspect::ScopedArch forced(arch);  // unsupported: a clear error, exit 1
-      const std::string arch_label(kutlog::arch_name(arch));
-      for (const std::string& name : functions) {
-        SweepOptions options;
-        options.threads = threads;
-        const auto add_row = [&](std::string function, const auto& sweep) {
-          Row& row = rows.emplace_back();
-          row.function = std::move(function), row.arch = arch_label, row.variant = "precise";
-          options.profile = profile ? &row.profile : nullptr;
-          // Buckets as the figure's x axis: logarithmic for the domains spanning decades.
-          options.profile_linear_in_value = name != "log" && name != "pow";
-          options.progress_label = row.function + " " + arch_label;
-          row.stats = sweep(options);
-        };
-        if (name != "pow") {
-          const UnaryFunction& function = *find_unary_function(name);
-          add_row(name, [&](const SweepOptions& o) {
-            return sweep_unary(function, function.domain_lo, function.domain_hi, o);
-          });
-          continue;
-        }
-        for (float y : kPowSweepExponents)
-          add_row(fmt::format("pow[y={:g}]", y),
-                  [&](const SweepOptions& o) { return sweep_pow_exponent(y, o); });
-        if (!profile)
-          add_row(fmt::format("pow[random {}]", random_pairs),
-                  [&](const SweepOptions& o) { return sweep_pow_random(random_pairs, 1, o); });
-      }
-    }
-
-    const Format format = parse_format(format_name);
-    if (profile) {
-      print_profile(rows, functions.front(), format);
-      return 0;
-    }
-    if (summary) {
-      print_summary(rows, functions, format);
-      return 0;
-    }
-    Table table({"function", "arch", "variant", "max_ulp", "worst_input", "mean_ulp", "inputs"});
-    for (const Row& row : rows)
-      table.add_row({row.function, row.arch, row.variant, fmt::format("{:.4f}", row.stats.max_ulp),
-                     format_input(row.stats), fmt::format("{:.4f}", row.stats.mean_ulp()),
-                     fmt::to_string(row.stats.inputs)});
-    table.print(format);
+int measure_math_functions(const std::vector<kutlog::Arch>& archs, const UlpOptions& o) {
+  validate_math_functions(o);
+  const std::vector<Row> rows = sweep_math_functions(archs, o);
+  const Format format = parse_format(o.format_name);
+  if (o.profile) {
+    print_profile(rows, o.functions.front(), format);
     return 0;
-  });
+  }
+  if (o.summary) {
+    print_summary(rows, o.functions, format);
+    return 0;
+  }
+  Table table({"function", "arch", "variant", "max_ulp", "worst_input", "mean_ulp", "inputs"});
+  for (const Row& row : rows)
+    table.add_row({row.function, row.arch, row.variant, fmt::format("{:.4f}", row.stats.max_ulp),
+                   format_input(row.stats), fmt::format("{:.4f}", row.stats.mean_ulp()),
+                   fmt::to_string(row.stats.inputs)});
+  table.print(format);
+  return 0;
+}
+
+// The lobes, a polynomial pow, or the math functions, as --function asks.
+int measure(const UlpOptions& o) {
+  const std::vector<kutlog::Arch> archs = selected_archs(o.arch_names);
+  const std::vector<std::string>& functions = o.functions;
+  const bool lobes = std::find(functions.begin(), functions.end(), "kutlog") != functions.end();
+  if (lobes && functions.size() > 1)
+    throw std::invalid_argument("--function kutlog measures the lobes; give it alone");
+  if (lobes) {
+    for (const std::string& n : o.n_list) exponent_of(n, 1);  // validates before any sweep
+    return measure_lobes(archs, o.variants, o.n_list, o.k_list, o.q_list, o.threads,
+                         parse_format(o.format_name));
+  }
+  for (const char* power : {"pow_poly", "pow_poly_perlane"})
+    if (std::find(functions.begin(), functions.end(), power) != functions.end()) {
+      if (functions.size() > 1)
+        throw std::invalid_argument(fmt::format("--function {} measures a polynomial pow; give it alone",
+                                                power));
+      for (const std::string& n : o.n_list) exponent_of(n, 1);
+      return measure_power_poly(archs, o.variants, o.n_list, power == std::string("pow_poly_perlane"),
+                                parse_format(o.format_name));
+    }
+  return measure_math_functions(archs, o);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app(ulp_description(), "kutlog-ulp");
+  UlpOptions options;
+  add_ulp_options(app, options);
+  return run_tool(app, argc, argv, [&] { return measure(options); });
 }
