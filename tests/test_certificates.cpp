@@ -1,0 +1,171 @@
+// The bound each Lobe kernel's setup certified (inspect::certificate), over the accuracy grid,
+// against tests/data/certificates-<platform>.txt: a change to the error budget
+// (src/lobe_bound.hpp) that loosens any certificate by more than 10 % fails, as does a kernel
+// of the record that is no longer certified. After a change meant to move the certificates
+// (a tighter budget, a lower degree), record them anew:
+//   KUTLOG_RECORD_CERTIFICATES=1 build/tests/kutlog-test-certificates
+// The distribution of measured worst error over certificate (docs/accuracy.md) is printed by
+//   KUTLOG_CERTIFICATE_RATIOS=1 build/tests/kutlog-test-certificates --gtest_filter='*Ratio*'
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "common/names.hpp"
+#include "kutlog/dispatch.hpp"
+#include "kutlog/inspect.hpp"
+#include "lobe_accuracy.hpp"
+
+namespace kutlog {
+namespace {
+
+#if defined(__aarch64__)
+constexpr const char* kPlatformName = "aarch64";
+#else
+constexpr const char* kPlatformName = "x86_64";
+#endif
+// How much a certificate may grow over its record before the test fails.
+constexpr double kLoosening = 1.1;
+constexpr inspect::Arithmetic kArithmetics[] = {
+    inspect::Arithmetic::unfused, inspect::Arithmetic::fused, inspect::Arithmetic::scalar};
+constexpr const char* kArithmeticNames[] = {"unfused", "fused", "scalar"};
+
+std::string certificate_file() {
+  return std::string(KUTLOG_TEST_DATA_DIR) + "/certificates-" + kPlatformName + ".txt";
+}
+
+// "n=1000 k=5 Q=0.5 precise exact_coef fused": one kernel of the grid.
+std::string kernel_key(const LobeCase& lobe, Variant variant, Normalization normalization,
+                       inspect::Arithmetic arithmetic) {
+  std::ostringstream key;
+  key << "n=" << lobe.n << "_k=" << lobe.k << "_Q=" << lobe.Q << ' ' << variant_name(variant)
+      << ' ' << normalization_name(normalization) << ' ' << kArithmeticNames[int(arithmetic)];
+  return key.str();
+}
+
+using Certificates = std::map<std::string, inspect::KernelCertificate>;
+
+Certificates certify_grid() {
+  Certificates certificates;
+  for (const LobeCase& c : accuracy_grid()) {
+    const Lobe lobe(c.n, c.k, c.Q);
+    for (Variant variant : tools::kLobeVariants)
+      for (Normalization normalization : tools::kLobeNormalizations)
+        for (inspect::Arithmetic arithmetic : kArithmetics)
+          certificates[kernel_key(c, variant, normalization, arithmetic)] =
+              inspect::certificate(lobe, variant, normalization, arithmetic);
+  }
+  return certificates;
+}
+
+// "key abs_error epicenter_ulp" per line, the bounds as hexadecimal floats (exact).
+Certificates read_certificates() {
+  Certificates certificates;
+  std::ifstream file(certificate_file());
+  std::string lobe, variant, normalization, arithmetic, abs_error, epicenter_ulp;
+  while (file >> lobe >> variant >> normalization >> arithmetic >> abs_error >> epicenter_ulp)
+    certificates[lobe + ' ' + variant + ' ' + normalization + ' ' + arithmetic] = {
+        std::strtod(abs_error.c_str(), nullptr), std::strtod(epicenter_ulp.c_str(), nullptr)};
+  return certificates;
+}
+
+void write_certificates(const Certificates& certificates) {
+  std::FILE* file = std::fopen(certificate_file().c_str(), "w");
+  ASSERT_NE(file, nullptr) << certificate_file();
+  for (const auto& [key, certificate] : certificates)
+    std::fprintf(file, "%s %a %a\n", key.c_str(), certificate.abs_error,
+                 certificate.epicenter_ulp);
+  std::fclose(file);
+}
+
+TEST(Certificates, NoneLoosensByTenPercent) {
+  const Certificates recorded = read_certificates();
+  const Certificates current = certify_grid();
+  if (std::getenv("KUTLOG_RECORD_CERTIFICATES")) {
+    write_certificates(current);
+    GTEST_SKIP() << "recorded " << certificate_file();
+  }
+  ASSERT_FALSE(recorded.empty()) << "no certificates recorded in " << certificate_file();
+  EXPECT_EQ(current.size(), recorded.size()) << "the grid changed: record it anew";
+  for (const auto& [key, was] : recorded) {
+    const auto found = current.find(key);
+    if (found == current.end()) {
+      ADD_FAILURE() << key << ": recorded, no longer certified";
+      continue;
+    }
+    const inspect::KernelCertificate& now = found->second;
+    EXPECT_LE(now.abs_error, kLoosening * was.abs_error) << key << ": abs_error loosened";
+    EXPECT_LE(now.epicenter_ulp, kLoosening * was.epicenter_ulp)
+        << key << ": epicenter_ulp loosened";
+  }
+}
+
+void evaluate_scalar(const Lobe& lobe, Variant variant, Normalization normalization,
+                     const float* t, float* out, std::size_t count) {
+  for (std::size_t i = 0; i < count; ++i) out[i] = lobe.eval(t[i], variant, normalization);
+}
+
+// A supported arch whose array kernels run that arithmetic, if any.
+std::optional<Arch> arch_running(inspect::Arithmetic arithmetic) {
+  for (Arch arch : supported_archs()) {
+    const inspect::ScopedArch scoped(arch);
+    if (arithmetic_of(tools::evaluate_array) == arithmetic) return arch;
+  }
+  return std::nullopt;
+}
+
+struct Ratios {
+  std::map<std::string, std::vector<double>> by_group;  // "all", a variant, an arithmetic
+  void add(const std::string& variant, const std::string& arithmetic, double ratio) {
+    for (const std::string& group : {std::string("all"), variant, arithmetic})
+      by_group[group].push_back(ratio);
+  }
+  void print() {
+    std::printf("| kernels | count | min | median | max |\n|---|---:|---:|---:|---:|\n");
+    for (const char* group : {"all", "precise", "fast", "unfused", "fused", "scalar"}) {
+      std::vector<double>& ratios = by_group[group];
+      if (ratios.empty()) continue;
+      std::sort(ratios.begin(), ratios.end());
+      std::printf("| %s | %zu | %.3f | %.3f | %.3f |\n", group, ratios.size(), ratios.front(),
+                  ratios[ratios.size() / 2], ratios.back());
+    }
+  }
+};
+
+// Every kernel's worst error measured (every 31st float of the support, every 7th of the
+// epicenter) over its certified abs_error.
+TEST(Certificates, RatioOfMeasuredToCertified) {
+  if (!std::getenv("KUTLOG_CERTIFICATE_RATIOS")) GTEST_SKIP() << "KUTLOG_CERTIFICATE_RATIOS";
+  Ratios ratios;
+  for (inspect::Arithmetic arithmetic : kArithmetics) {
+    const bool scalar = arithmetic == inspect::Arithmetic::scalar;
+    const std::optional<Arch> arch = scalar ? std::nullopt : arch_running(arithmetic);
+    if (!scalar && !arch) continue;
+    std::optional<inspect::ScopedArch> scoped;
+    if (arch) scoped.emplace(*arch);
+    for (const LobeCase& c : accuracy_grid()) {
+      const Lobe lobe(c.n, c.k, c.Q);
+      const auto errors = tools::measure_lobe(lobe, {31, 7},
+                                              scalar ? evaluate_scalar : tools::evaluate_array);
+      for (int i = 0; i < 4; ++i) {
+        const Variant variant = tools::kLobeVariants[i / 2];
+        const double certified =
+            inspect::certificate(lobe, variant, tools::kLobeNormalizations[i % 2], arithmetic)
+                .abs_error;
+        ratios.add(std::string(variant_name(variant)), kArithmeticNames[int(arithmetic)],
+                   errors[std::size_t(i)].max_abs_error / certified);
+      }
+    }
+  }
+  ratios.print();
+}
+
+}  // namespace
+}  // namespace kutlog
