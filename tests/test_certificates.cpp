@@ -127,7 +127,8 @@ struct Ratios {
     for (const std::string& group : {std::string("all"), variant, arithmetic})
       by_group[group].push_back(ratio);
   }
-  void print() {
+  void print(const char* measure) {
+    std::printf("\n%s, measured over certified:\n\n", measure);
     std::printf("| kernels | count | min | median | max |\n|---|---:|---:|---:|---:|\n");
     for (const char* group : {"all", "precise", "fast", "unfused", "fused", "scalar"}) {
       std::vector<double>& ratios = by_group[group];
@@ -140,10 +141,10 @@ struct Ratios {
 };
 
 // Every kernel's worst error measured (every 31st float of the support, every 7th of the
-// epicenter) over its certified abs_error.
+// epicenter) over its certificate: abs_error, and epicenter_ulp where the kernel has one.
 TEST(Certificates, RatioOfMeasuredToCertified) {
   if (!std::getenv("KUTLOG_CERTIFICATE_RATIOS")) GTEST_SKIP() << "KUTLOG_CERTIFICATE_RATIOS";
-  Ratios ratios;
+  Ratios abs_ratios, ulp_ratios;
   for (inspect::Arithmetic arithmetic : kArithmetics) {
     const bool scalar = arithmetic == inspect::Arithmetic::scalar;
     const std::optional<Arch> arch = scalar ? std::nullopt : arch_running(arithmetic);
@@ -156,15 +157,20 @@ TEST(Certificates, RatioOfMeasuredToCertified) {
                                               scalar ? evaluate_scalar : tools::evaluate_array);
       for (int i = 0; i < 4; ++i) {
         const Variant variant = tools::kLobeVariants[i / 2];
-        const double certified =
-            inspect::certificate(lobe, variant, tools::kLobeNormalizations[i % 2], arithmetic)
-                .abs_error;
-        ratios.add(std::string(variant_name(variant)), kArithmeticNames[int(arithmetic)],
-                   errors[std::size_t(i)].max_abs_error / certified);
+        const inspect::KernelCertificate& certified =
+            inspect::certificate(lobe, variant, tools::kLobeNormalizations[i % 2], arithmetic);
+        const tools::LobeErrors& measured = errors[std::size_t(i)];
+        const std::string variant_label(variant_name(variant));
+        abs_ratios.add(variant_label, kArithmeticNames[int(arithmetic)],
+                       measured.max_abs_error / certified.abs_error);
+        if (certified.epicenter_ulp > 0)
+          ulp_ratios.add(variant_label, kArithmeticNames[int(arithmetic)],
+                         measured.max_epicenter_ulp / certified.epicenter_ulp);
       }
     }
   }
-  ratios.print();
+  abs_ratios.print("abs_error");
+  ulp_ratios.print("epicenter_ulp");
 }
 
 }  // namespace
