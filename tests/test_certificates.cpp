@@ -85,6 +85,27 @@ void write_certificates(const Certificates& certificates) {
   std::fclose(file);
 }
 
+// A supported arch whose array kernels run that arithmetic, if any.
+std::optional<Arch> arch_running(inspect::Arithmetic arithmetic) {
+  for (Arch arch : supported_archs()) {
+    const inspect::ScopedArch scoped(arch);
+    if (arithmetic_of(tools::evaluate_array) == arithmetic) return arch;
+  }
+  return std::nullopt;
+}
+
+// Where no arch this machine runs has a kernel's arithmetic (fused on a portable-only build),
+// the setup cannot run that kernel over its epicenter and certifies it by the bound alone:
+// looser by design, so not compared.
+bool certified_as_recorded(const std::string& key) {
+  static const bool runs[] = {arch_running(inspect::Arithmetic::unfused).has_value(),
+                              arch_running(inspect::Arithmetic::fused).has_value()};
+  for (inspect::Arithmetic arithmetic : {inspect::Arithmetic::unfused, inspect::Arithmetic::fused})
+    if (key.ends_with(std::string(" ") + kArithmeticNames[int(arithmetic)]))
+      return runs[int(arithmetic)];
+  return true;
+}
+
 TEST(Certificates, NoneLoosensByTenPercent) {
   const Certificates recorded = read_certificates();
   const Certificates current = certify_grid();
@@ -92,9 +113,10 @@ TEST(Certificates, NoneLoosensByTenPercent) {
     write_certificates(current);
     GTEST_SKIP() << "recorded " << certificate_file();
   }
-  ASSERT_FALSE(recorded.empty()) << "no certificates recorded in " << certificate_file();
+  if (recorded.empty()) GTEST_SKIP() << "no certificates recorded for " << kPlatformName;
   EXPECT_EQ(current.size(), recorded.size()) << "the grid changed: record it anew";
   for (const auto& [key, was] : recorded) {
+    if (!certified_as_recorded(key)) continue;
     const auto found = current.find(key);
     if (found == current.end()) {
       ADD_FAILURE() << key << ": recorded, no longer certified";
@@ -110,15 +132,6 @@ TEST(Certificates, NoneLoosensByTenPercent) {
 void evaluate_scalar(const Lobe& lobe, Variant variant, Normalization normalization,
                      const float* t, float* out, std::size_t count) {
   for (std::size_t i = 0; i < count; ++i) out[i] = lobe.eval(t[i], variant, normalization);
-}
-
-// A supported arch whose array kernels run that arithmetic, if any.
-std::optional<Arch> arch_running(inspect::Arithmetic arithmetic) {
-  for (Arch arch : supported_archs()) {
-    const inspect::ScopedArch scoped(arch);
-    if (arithmetic_of(tools::evaluate_array) == arithmetic) return arch;
-  }
-  return std::nullopt;
 }
 
 struct Ratios {
