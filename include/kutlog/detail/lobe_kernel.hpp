@@ -9,10 +9,13 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
+#include <type_traits>
 #include <vector>
 
 #include "kutlog/api.hpp"
 #include "kutlog/detail/integer_power.hpp"
+#include "kutlog/kutlog.h"
 
 KUTLOG_API_BEGIN
 namespace kutlog::detail {
@@ -172,31 +175,20 @@ template <class Real, std::size_t kDegree>
 struct PiecewisePolynomial {
   static constexpr std::size_t degree = kDegree;
   // A polynomial in powers of u = x - center, lowest first; the center is loaded with it, where
-  // converting the piece's index back would take longer. A power of two in size: no piece
-  // straddles a cache line.
-  struct alignas(std::bit_ceil(sizeof(Real) * (kDegree + 2))) Piece {
-    std::array<Real, kDegree + 1> polynomial;
-    Real center;
-  };
+  // converting the piece's index back would take longer. The C API's struct (kutlog/kutlog.h),
+  // a power of two in size: no piece straddles a cache line.
+  using Piece = std::conditional_t<std::is_same_v<Real, double>, kutlog_piece, kutlog_fast_piece>;
+  static_assert(std::size(Piece{}.polynomial) == kDegree + 1);
   Real pieces_per_w = 0;     // x = w pieces_per_w, in the piece floor(x)
   std::vector<Piece> table;  // empty where the setup could not certify it
 
+  // The C API's evaluation, one piece of code for C and C++.
   [[gnu::always_inline]] float evaluate(float t) const noexcept {
-    // NaN kept, and t below -1 (past every cut-off) 0, before x: NaN's conversion to an integer
-    // is undefined, and below -1 x could overflow (from -1 up it is at most 2 pieces_per_w).
-    if (!(t >= -1.0f)) [[unlikely]] return t != t ? t : 0.0f;
-    const Real x = (Real(1) - Real(std::min(t, 1.0f))) * pieces_per_w;
-    // Past the zero piece, clamped to it in integers: a clamp of t to t_cut would take a turn
-    // of the floating-point adders, the units this path waits on.
-    const Piece& piece = table[std::min(std::size_t(std::int64_t(x)), table.size() - 1)];
-    return float(horner(piece.polynomial, x - piece.center));
-  }
-
- private:
-  template <std::size_t kFrom = 0>
-  [[gnu::always_inline]] static Real horner(const std::array<Real, kDegree + 1>& c, Real u) {
-    if constexpr (kFrom == kDegree) return c[kFrom];
-    else return horner<kFrom + 1>(c, u) * u + c[kFrom];
+    const auto last = static_cast<std::uint32_t>(table.size() - 1);
+    if constexpr (std::is_same_v<Real, double>)
+      return kutlog_pieces_eval_(table.data(), last, pieces_per_w, t);
+    else
+      return kutlog_fast_pieces_eval_(table.data(), last, pieces_per_w, t);
   }
 };
 // Precise: cubics in double, x too (in float its rounding alone would reach 2^-22 of the
