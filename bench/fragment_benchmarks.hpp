@@ -24,26 +24,19 @@
 namespace kutlog::bench {
 
 void register_native_fragment_benchmarks();  // bench/fragment_native.cpp, where it is built
+// The rows of kutlog_eval from C (bench/fragment_c.c) at those of register_fragment_benchmarks.
+void register_c_fragment_benchmarks(double n, int k, const std::string& at,
+                                    const std::vector<float>& cosines);
 
 // Internal linkage: each file that registers these compiles its own copy, with its own flags.
 namespace {
 
-// out[i] = function(x[i]) one call at a time: kArrayLength inputs in BenchArrays' block, more in
-// vectors of their own.
+// out[i] = function(x[i]) one call at a time (time_loop, bench/lobe_benchmarks.hpp).
 template <class Function>
 void scalar_unary(benchmark::State& state, Function function, const std::vector<float>& inputs) {
-  std::optional<BenchArrays> arrays;
-  std::vector<float> outputs;
-  if (inputs.size() == kArrayLength) arrays.emplace(inputs, inputs);
-  else outputs.resize(inputs.size());
-  const float* const x = arrays ? arrays->x() : inputs.data();
-  float* const out = arrays ? arrays->out() : outputs.data();
-  for (auto _ : state) {
-    for (std::size_t i = 0; i < inputs.size(); ++i) out[i] = function(x[i]);
-    benchmark::DoNotOptimize(out);
-    benchmark::ClobberMemory();
-  }
-  state.SetItemsProcessed(state.iterations() * std::int64_t(inputs.size()));
+  time_loop(state, [&](const float* x, float* out, std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i) out[i] = function(x[i]);
+  }, inputs);
 }
 
 // out[i] = function(x[i], y[i]), the same way.
@@ -97,6 +90,7 @@ void register_fragment_benchmarks(const std::string& flags) {
         register_scalar_unary("fragment/scalar_kutlog_fast" + at,
                               [lobe](float t) { return lobe->eval(t, Variant::fast); }, cosines);
         if (!flags.empty()) continue;
+        register_c_fragment_benchmarks(n, k, at, cosines);
         // A gloss map: each fragment's n log-uniform in [n / 2, 2 n], against powf at that n.
         const auto per_lane = std::make_shared<const PerLaneLobe>(n / 2.0, 2.0 * n, k, kLobeAnchor);
         std::vector<float> exponents = uniform_inputs(-1, 1, 5, count);

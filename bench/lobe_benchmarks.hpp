@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -24,6 +26,24 @@
 #include "kutlog/shade.hpp"
 
 namespace kutlog::bench {
+
+// loop(x, out, count) timed over inputs: kArrayLength of them in BenchArrays' block, more in
+// vectors of their own.
+template <class Loop>
+void time_loop(benchmark::State& state, Loop loop, const std::vector<float>& inputs) {
+  std::optional<BenchArrays> arrays;
+  std::vector<float> outputs;
+  if (inputs.size() == kArrayLength) arrays.emplace(inputs, inputs);
+  else outputs.resize(inputs.size());
+  const float* const x = arrays ? arrays->x() : inputs.data();
+  float* const out = arrays ? arrays->out() : outputs.data();
+  for (auto _ : state) {
+    loop(x, out, inputs.size());
+    benchmark::DoNotOptimize(out);
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * std::int64_t(inputs.size()));
+}
 
 inline constexpr int kLobeExponents[] = {10, 100, 1000};
 inline constexpr int kLobePowers[] = {1, 3, 5};

@@ -137,7 +137,7 @@ static inline float kutlog_pieces_eval_(const kutlog_piece* pieces, uint32_t las
   size_t index;
   const kutlog_piece* piece;
   if (!(t >= -1.0f)) return t != t ? t : 0.0f;
-  x = (1.0 - KUTLOG_CONVERT(double, 1.0f < t ? 1.0f : t)) * pieces_per_w;
+  x = (1.0 - KUTLOG_CONVERT(double, t < 1.0f ? t : 1.0f)) * pieces_per_w;
   index = KUTLOG_CONVERT(size_t, KUTLOG_CONVERT(int64_t, x));
   piece = pieces + (index < last_piece ? index : last_piece);
   u = x - piece->center;
@@ -151,7 +151,7 @@ static inline float kutlog_fast_pieces_eval_(const kutlog_fast_piece* pieces,
   size_t index;
   const kutlog_fast_piece* piece;
   if (!(t >= -1.0f)) return t != t ? t : 0.0f;
-  x = (1.0f - (1.0f < t ? 1.0f : t)) * pieces_per_w;
+  x = (1.0f - (t < 1.0f ? t : 1.0f)) * pieces_per_w;
   index = KUTLOG_CONVERT(size_t, KUTLOG_CONVERT(int64_t, x));
   piece = pieces + (index < last_piece ? index : last_piece);
   u = x - piece->center;
