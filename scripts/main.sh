@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The main job: install what is needed, build, and write everything kutlog shows into one
 # output folder (default out/): the article's tables, the ULP table, a benchmark summary and
-# its page (docs/benchmarks.md), the figures, the renders, the white-furnace plot, the
-# path-traced sampling comparison and a frame of the example rasterizer.
+# its page (docs/benchmarks.md), the figures, the model's distance to t^n (docs/shape.md), the
+# renders, the white-furnace plot, the path-traced sampling comparison and a frame of the
+# example rasterizer.
 # About 10 minutes on 2 cores, most of it the ULP sweep over every float.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -32,7 +33,7 @@ section "kutlog-bench: lobes at n = 1000 against pow (xsimd), every arch, median
 "$build_dir/bench/kutlog-bench" --kutlog_ratios_from="$out/bench.json" | tee "$out/bench.md"
 "$build_dir/bench/kutlog-bench" --kutlog_ratios_from="$out/bench.json" --kutlog_page="$out/benchmarks"
 
-section "figures (data: kutlog-curves, CSV; drawing: matplotlib), renders, white furnace"
+section "figures (kutlog-curves CSV, drawn by matplotlib), white furnace, distance to t^n, renders"
 # Debian's Python, where python3-matplotlib is installed (a python3 earlier on PATH may lack it).
 python=${KUTLOG_PYTHON:-/usr/bin/python3}
 draw() {  # draw FIGURE NAME: out/NAME.csv -> out/NAME.png
@@ -44,6 +45,10 @@ for figure in 2 3 9; do
 done
 "$tools/kutlog-curves" --figure albedo --n 100 --k 5 --q 0.5 --format csv >"$out/albedo.csv"
 draw albedo albedo
+# The model against t^n: the README's table (docs/shape.md) and the sweep over n behind it.
+"$tools/kutlog-curves" --figure shape-table --format markdown | tee "$out/shape.md"
+"$tools/kutlog-curves" --figure shape --format csv >"$out/shape.csv"
+draw shape shape
 "$tools/kutlog-render" --object sphere --n 100 --k 3 --output "$out/spheres"
 "$tools/kutlog-render" --object teapot --n 100 --k 3 --output "$out/teapot"
 

@@ -280,6 +280,42 @@ double albedo_blinn(const KutlogLobe& lobe, double coef, double theta_i) {
              0, limit, 1e-10);
 }
 
+namespace {
+
+// The maximum of f over [lo, hi] and where it falls, for f smooth and unimodal between the two
+// grid points around its maximum: the best of grid + 1 equally spaced points, refined by
+// golden-section search between its neighbours.
+struct Maximum {
+  double value, x;
+};
+Maximum locate_maximum(const std::function<double(double)>& f, double lo, double hi, int grid) {
+  int best = 0;
+  double best_value = -1;
+  for (int i = 0; i <= grid; ++i) {
+    const double value = f(lo + (hi - lo) * i / grid);
+    if (value > best_value) best_value = value, best = i;
+  }
+  const double best_x = lo + (hi - lo) * best / grid;
+  double a = lo + (hi - lo) * std::max(best - 1, 0) / grid;
+  double b = lo + (hi - lo) * std::min(best + 1, grid) / grid;
+  const double inv_phi = (std::sqrt(5.0) - 1) / 2;
+  double x1 = b - inv_phi * (b - a), x2 = a + inv_phi * (b - a);
+  double f1 = f(x1), f2 = f(x2);
+  for (int iteration = 0; iteration < 60; ++iteration) {
+    if (f1 > f2) {
+      b = x2, x2 = x1, f2 = f1;
+      x1 = b - inv_phi * (b - a), f1 = f(x1);
+    } else {
+      a = x1, x1 = x2, f1 = f2;
+      x2 = a + inv_phi * (b - a), f2 = f(x2);
+    }
+  }
+  if (best_value >= f1 && best_value >= f2) return {best_value, best_x};
+  return f1 >= f2 ? Maximum{f1, x1} : Maximum{f2, x2};
+}
+
+}  // namespace
+
 double max_relative_error_in_epicenter(const std::function<double(double)>& lobe_of_angle,
                                        double n, double zone_floor) {
   validate_exponent(n);
@@ -287,30 +323,15 @@ double max_relative_error_in_epicenter(const std::function<double(double)>& lobe
   const auto relative_error = [&](double x) {
     return std::fabs(lobe_of_angle(x) / std::pow(std::cos(x), n) - 1);
   };
-  // A grid finds the peak's neighbourhood; golden-section search then refines it, since the
-  // relative error is smooth and unimodal between two grid points around its maximum.
-  constexpr int kGrid = 256;
-  int best = 0;
-  double best_error = -1;
-  for (int i = 0; i <= kGrid; ++i) {
-    const double e = relative_error(zone_end * i / kGrid);
-    if (e > best_error) best_error = e, best = i;
-  }
-  double lo = zone_end * std::max(best - 1, 0) / kGrid;
-  double hi = zone_end * std::min(best + 1, kGrid) / kGrid;
-  const double inv_phi = (std::sqrt(5.0) - 1) / 2;
-  double x1 = hi - inv_phi * (hi - lo), x2 = lo + inv_phi * (hi - lo);
-  double e1 = relative_error(x1), e2 = relative_error(x2);
-  for (int iteration = 0; iteration < 60; ++iteration) {
-    if (e1 > e2) {
-      hi = x2, x2 = x1, e2 = e1;
-      x1 = hi - inv_phi * (hi - lo), e1 = relative_error(x1);
-    } else {
-      lo = x1, x1 = x2, e1 = e2;
-      x2 = lo + inv_phi * (hi - lo), e2 = relative_error(x2);
-    }
-  }
-  return std::max({best_error, e1, e2});
+  return locate_maximum(relative_error, 0, zone_end, 256).value;
+}
+
+GapToBlinnPhong max_gap_to_blinn_phong(const KutlogLobe& lobe) {
+  const auto gap = [&](double x) {
+    return std::fabs(lobe.eval_angle(x) - blinn_phong(std::cos(x), lobe.n()));
+  };
+  const Maximum maximum = locate_maximum(gap, 0, lobe.integration_limit(), 1 << 16);
+  return {maximum.value, maximum.x};
 }
 
 }  // namespace kutlog::ref

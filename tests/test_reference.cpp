@@ -128,6 +128,21 @@ TEST_P(LobeProperties, CutoffBehindAnchorAndInsideHemisphereIffNAboveK) {
   if (p.n < p.k) EXPECT_LT(lobe.c(), 1);
 }
 
+TEST_P(LobeProperties, MaxGapToBlinnPhongIsTheGapWhereItSaysAndNoneIsLarger) {
+  const auto gap = [&](double x) {
+    return std::fabs(lobe.eval_angle(x) - std::pow(std::cos(x), lobe.n()));
+  };
+  const GapToBlinnPhong worst = max_gap_to_blinn_phong(lobe);
+  EXPECT_EQ(worst.gap, gap(worst.angle));
+  EXPECT_GE(worst.angle, 0);
+  EXPECT_LE(worst.angle, std::min(lobe.cutoff_angle(), pi / 2));
+  // Over the whole quarter circle, and densely over twice the lobe's support.
+  const double support = std::min(2 * lobe.cutoff_angle(), pi / 2);
+  for (int i = 0; i <= 4096; ++i)
+    for (const double x : {0.5 * pi * i / 4096, support * (i + 0.37) / 4097})
+      ASSERT_LE(gap(x), worst.gap * (1 + 1e-12)) << "x=" << x;
+}
+
 INSTANTIATE_TEST_SUITE_P(Grid, LobeProperties, testing::ValuesIn(property_cases()), lobe_case_name);
 
 TEST(Lobe, NEqualsKIsThePlainCosinePowerWithLafortuneWillemsCoef) {

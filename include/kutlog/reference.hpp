@@ -173,6 +173,18 @@ double vcavity_shadowing(double cos_m, double cos_i, double cos_o, double dot_m)
 // a dense grid, refined by golden-section search. n validated as blinn_phong's.
 double max_relative_error_in_epicenter(const std::function<double(double)>& lobe_of_angle,
                                        double n, double zone_floor = 0.6);
+
+// ---- Distance to Blinn-Phong ---------------------------------------------------------------
+
+// The largest gap |F(x) - cos^n(x)| of the lobe over every angle x in [0, pi/2], relative to
+// the peak (both are 1 at x = 0), and the angle where it falls. Past G (integration_limit())
+// the gap is cos^n(x), falling with x, so the maximum is in [0, G]: located on a grid of 2^16
+// angles over it (G shrinks as 1 / sqrt(n), with the lobe), refined by golden-section search.
+struct GapToBlinnPhong {
+  double gap;
+  double angle;  // radians
+};
+GapToBlinnPhong max_gap_to_blinn_phong(const KutlogLobe& lobe);
 // Adaptive Gauss-Kronrod (7-15) quadrature of f over [a, b]: the panel with the largest error
 // estimate |K15 - G7| is bisected until their sum is below rel_tol |integral| (or 4096 panels,
 // or a panel as narrow as rounding allows). The estimate bounds the 7-point Gauss result; the

@@ -9,6 +9,8 @@ Figures and the tables they read:
   3        kutlog-curves --figure 3: delta in the epicenter zone against n
   9        kutlog-curves --figure 9: energy error of the fitted and of the exact coef against n
   albedo   kutlog-curves --figure albedo: white furnace, directional albedo against incidence
+  shape    kutlog-curves --figure shape: the largest |F_kutlog - t^n| against n, per k, a panel
+           per Q
   ulp      kutlog-ulp --function F --profile: max ULP error per input bucket, per arch
   rmse     kutlog-pathtrace: RMSE against a high-spp reference against spp, lobe and uniform
            sampling
@@ -159,6 +161,37 @@ def albedo(rows):
     return figure
 
 
+def shape_gaps(rows):
+    """A panel per Q, a line per k: the largest gap to t^n against n, on shared axes."""
+    anchors = list(dict.fromkeys(column(rows, "Q")))
+    columns = 2 if len(anchors) > 1 else 1
+    figure, panels = plt.subplots((len(anchors) + columns - 1) // columns, columns,
+                                  figsize=FIGURE_INCHES, dpi=DPI, layout="constrained",
+                                  sharex=True, sharey=True, squeeze=False)
+    n = column(rows, "n")
+    # Decades, and 3.2 times each between them (32 is one of the README table's n).
+    ticks = [tick for tick in (10, 32, 100, 320, 1000, 3200, 10000) if min(n) <= tick <= max(n)]
+    for axes, anchor in zip(panels.flat, anchors):
+        for k in dict.fromkeys(column(rows, "k")):
+            mine = [row for row in rows if row["Q"] == anchor and row["k"] == k]
+            axes.plot(column(mine, "n"), column(mine, "max_gap"), label=f"k = {k:g}")
+        axes.set_xscale("log")
+        log_grid(axes, "x")
+        axes.set_title(f"Q = {anchor:g}")
+    for axes in panels[-1]:
+        axes.set_xlabel("$n$")
+    for axes in panels[:, 0]:
+        axes.set_ylabel(r"max $|F_\mathrm{kutlog} - t^n|$")
+    # Shared axes: set once, after every line is drawn.
+    panels[0, 0].set_xticks(ticks, [f"{tick:g}" for tick in ticks])
+    panels[0, 0].set(xlim=(min(n), max(n)), ylim=(0, 1.05 * max(column(rows, "max_gap"))))
+    # Above Q = 0.25's lines (or the only panel's), where the panel is empty.
+    panels.flat[min(1, len(anchors) - 1)].legend(loc="upper right", ncols=3)
+    figure.suptitle(r"Largest gap between $F_\mathrm{kutlog}$ and Blinn-Phong $t^n$ over the "
+                    "angle (the peak is 1)", fontsize=STYLE["axes.titlesize"])
+    return figure
+
+
 def ulp_errors(rows):
     figure, axes = new_axes()
     functions = list(dict.fromkeys(column(rows, "function")))
@@ -221,6 +254,7 @@ FIGURES = {
     "3": epicenter_errors,
     "9": energy_errors,
     "albedo": albedo,
+    "shape": shape_gaps,
     "ulp": ulp_errors,
     "rmse": sampling_errors,
 }
