@@ -76,7 +76,8 @@ std::string_view explanation(RatioKind kind) {
              "level (256 over [n / 2, 2 n]), each fragment's level at random, against `powf` at the\n"
              "level's n. `/ it` is the row's speed over the peer's. The benchmark is\n"
              "compiled with the compiler's default flags; the rows `-march=native` are the same\n"
-             "loops of kutlog's inline `eval(t)` compiled for this machine.\n";
+             "loops of kutlog's inline `eval(t)` compiled for this machine; the rows `from C` are\n"
+             "the loop compiled as C99, `kutlog_eval` on a `kutlog_fragment` of `kutlog/kutlog.h`.\n";
     case RatioKind::span:
       return "## Spans\n\n"
              "The same 4096 inputs through the array `eval` (and through `shade` from cosines and\n"

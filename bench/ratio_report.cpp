@@ -157,14 +157,18 @@ std::optional<tools::Table> RatioCollector::fragment_ratios() const {
         if (kutlog == 0 || powf == 0 || pow_double == 0) continue;
         any = true;
         const double native = rate("fragment/scalar_kutlog" + at + "/flags:native"),
-                     fast_native = rate("fragment/scalar_kutlog_fast" + at + "/flags:native");
+                     fast_native = rate("fragment/scalar_kutlog_fast" + at + "/flags:native"),
+                     from_c = rate("fragment/scalar_kutlog_c" + at),
+                     fast_from_c = rate("fragment/scalar_kutlog_c_fast" + at);
         for (auto [name, rate_of] :
              {std::pair{"scalar_kutlog", kutlog}, std::pair{"scalar_kutlog_fast", fast},
               std::pair{"scalar_kutlog_cut", behind_cut},
               std::pair{"scalar_kutlog -march=native", native},
               std::pair{"scalar_kutlog_fast -march=native", fast_native},
+              std::pair{"scalar_kutlog_c (kutlog_eval from C)", from_c},
+              std::pair{"scalar_kutlog_c_fast (from C)", fast_from_c},
               std::pair{"scalar_powf", powf}, std::pair{"scalar_pow_double", pow_double}})
-          if (rate_of > 0)  // absent from runs before them: the cut and -march=native rows
+          if (rate_of > 0)  // absent from runs before them: the cut, -march=native and C rows
             table.add_row({name, std::to_string(n), inputs, std::to_string(k),
                            fmt::format("{:.2f}", 1e9 / rate_of), times(rate_of / powf),
                            times(rate_of / pow_double)});

@@ -1,6 +1,6 @@
 # cmake -DPREFIX=<install prefix> -DSOURCE=<this directory> -DBINARY=<work dir> [-DSHARED=ON]
 #   -P pkg_config_consumer.cmake
-# Builds main.cpp and renderer.cpp as a Make or Meson user would, with the flags
+# Builds main.cpp, renderer.cpp and c/c_consumer.c as a Make or Meson user would, with the flags
 # `pkg-config --cflags --libs kutlog` gives for the installed package, then runs them.
 find_program(PKG_CONFIG NAMES pkg-config pkgconf REQUIRED)
 file(GLOB_RECURSE pc_files ${PREFIX}/*/kutlog.pc)
@@ -20,6 +20,25 @@ file(MAKE_DIRECTORY ${BINARY})
 execute_process(COMMAND c++ -std=c++20 -O2 ${SOURCE}/main.cpp ${flags} ${extra}
                         -o ${BINARY}/kutlog-consumer COMMAND_ERROR_IS_FATAL ANY)
 execute_process(COMMAND ${BINARY}/kutlog-consumer COMMAND_ERROR_IS_FATAL ANY)
+
+# c/c_consumer.c as C99, linked by the C compiler: the static library through
+# `pkg-config --libs --static kutlog`, the shared one through `pkg-config --libs kutlog`.
+set(static_flag --static)
+if(SHARED)
+  set(static_flag)
+endif()
+execute_process(COMMAND ${PKG_CONFIG} --cflags --libs ${static_flag} kutlog OUTPUT_VARIABLE c_flags
+                OUTPUT_STRIP_TRAILING_WHITESPACE COMMAND_ERROR_IS_FATAL ANY)
+message(STATUS "pkg-config --cflags --libs ${static_flag} kutlog: ${c_flags}")
+separate_arguments(c_flags UNIX_COMMAND ${c_flags})
+execute_process(COMMAND cc -std=c99 -Wall -Wextra -pedantic -Werror -O2 ${SOURCE}/c/c_consumer.c
+                        ${c_flags} ${extra} -o ${BINARY}/kutlog-c-consumer
+                COMMAND_ERROR_IS_FATAL ANY)
+execute_process(COMMAND ${BINARY}/kutlog-c-consumer OUTPUT_VARIABLE c_output
+                COMMAND_ERROR_IS_FATAL ANY)
+if(NOT c_output MATCHES "c consumer: ok")
+  message(FATAL_ERROR "kutlog-c-consumer: ${c_output}")
+endif()
 
 # renderer.cpp, with kutlog.pc's flags alone and -fno-exceptions: no header it includes,
 # directly or through kutlog's, may be xsimd's (kutlog-simd.pc is the one that requires it).

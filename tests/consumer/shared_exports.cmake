@@ -9,7 +9,10 @@ execute_process(COMMAND nm -DC --defined-only ${LIBRARY} OUTPUT_VARIABLE symbols
 # Lobe's array eval is inline up to the active arch's loop: its first call goes out of line.
 foreach(api "kutlog::Lobe::Lobe(" "kutlog::Lobe::eval_out_of_line(" "kutlog::PerLaneLobe::eval("
             "kutlog::shade(" "kutlog::math::pow_u10(" "kutlog::ref::KutlogLobe::KutlogLobe("
-            "kutlog::active_arch()" "kutlog::detail::active_lobe_loops")
+            "kutlog::active_arch()" "kutlog::detail::active_lobe_loops"
+            # the C API (kutlog/kutlog.h)
+            "kutlog_lobe_create" "kutlog_fragment_kernel_eval" "kutlog_shade_directional"
+            "kutlog_sampler_sample_array" "kutlog_pow_u10_scalar_y" "kutlog_force_arch")
   string(FIND "${symbols}" "${api}" at)
   if(at EQUAL -1)
     message(FATAL_ERROR "${LIBRARY} does not export ${api}")
