@@ -2,8 +2,9 @@
 // coef * F_kutlog shading per 16x16 tile through kutlog's stream API (kutlog::shade, coverage
 // as the lane mask), on every core, and times that shading against pow-based Blinn-Phong
 // (kutlog::blinn_phong_xsimd, xsimd::pow) from the same cosines. It also times the shape most
-// software rasterizers have, a fragment function per pixel: kutlog's scalar Lobe::eval against
-// powf.
+// software rasterizers have, a fragment function per pixel: kutlog's scalar Lobe::eval, and the
+// same in C through kutlog/kutlog.h (fragment_shader.c), against powf. SHADING picks the path
+// whose highlight the image shows: the C and C++ fragment paths give the same bits.
 #include <OpenImageIO/imagebuf.h>
 
 #include <algorithm>
@@ -11,9 +12,11 @@
 #include <charconv>
 #include <cmath>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <kutlog/baselines.hpp>
+#include <kutlog/kutlog.h>
 #include <kutlog/lobe.hpp>
 #include <kutlog/shade.hpp>
 #include <optional>
@@ -21,6 +24,7 @@
 #include <thread>
 #include <vector>
 
+#include "fragment_shader.h"  // the fragment function in C
 #include "mesh.hpp"    // examples/common: the teapot
 #include "raster.hpp"  // examples/common: camera and visibility pass
 
@@ -33,8 +37,18 @@ using kutlog::examples::VisibilityBuffer;
 
 constexpr int kTile = 16;
 constexpr const char* kUsage =
-    "usage: kutlog-rasterizer [WIDTH HEIGHT [FRAMES [OUTPUT.png]]]  (defaults 1920 1080 5 "
-    "rasterizer.png; WIDTH, HEIGHT in [16, 16384], FRAMES in [1, 1000])";
+    "usage: kutlog-rasterizer [WIDTH HEIGHT [FRAMES [OUTPUT [SHADING]]]]  (defaults 1920 1080 5 "
+    "rasterizer.png stream; WIDTH, HEIGHT in [16, 16384], FRAMES in [1, 1000]; OUTPUT .png: "
+    "8 bits, else (.exr, .tif) 32-bit float; SHADING stream, fragment or c: the highlight of "
+    "kutlog::shade, of Lobe::eval per pixel, or of kutlog_eval per pixel in C)";
+
+enum class Shading { stream, fragment, c };
+std::optional<Shading> parse_shading(std::string_view text) {
+  if (text == "stream") return Shading::stream;
+  if (text == "fragment") return Shading::fragment;
+  if (text == "c") return Shading::c;
+  return std::nullopt;
+}
 
 struct TileInputs {
   std::array<float, kTile * kTile> t, n_dot_l;
@@ -85,13 +99,23 @@ int main(int argc, char** argv) {
   const auto width = argc > 1 ? parse_int(argv[1], kTile, 16384) : 1920;
   const auto height = argc > 2 ? parse_int(argv[2], kTile, 16384) : 1080;
   const auto frames = argc > 3 ? parse_int(argv[3], 1, 1000) : 5;
-  if (!width || !height || !frames || argc == 2 || argc > 5) {
+  const auto shading = argc > 5 ? parse_shading(argv[5]) : Shading::stream;
+  if (!width || !height || !frames || !shading || argc == 2 || argc > 6) {
     std::fprintf(stderr, "kutlog-rasterizer: error: %s\n", kUsage);
     return 2;
   }
   const char* output = argc > 4 ? argv[4] : "rasterizer.png";
   const float n = 1000;
   const kutlog::Lobe lobe(n, 3, 0.5);
+  // The same lobe for the C path: its fragment handle, 32 bytes, evaluated inline in C.
+  kutlog_lobe* c_lobe = nullptr;
+  kutlog_fragment c_fragment;
+  kutlog_error error;
+  if (kutlog_lobe_create(n, 3, 0.5, &c_lobe, &error) != KUTLOG_OK ||
+      kutlog_lobe_fragment(c_lobe, KUTLOG_EXACT_COEF, &c_fragment, &error) != KUTLOG_OK) {
+    std::fprintf(stderr, "kutlog-rasterizer: error: %s\n", error.message);
+    return 1;
+  }
   const Mesh mesh = kutlog::examples::utah_teapot(64);  // 32 patches x 64 x 64 quads
   const Camera camera({0.75f, 0.6f, 1.75f}, {0, -0.04f, 0}, 0.7f, *width, *height);
   const Vec3 to_light = kutlog::examples::normalize({-0.5f, 1.0f, 0.7f});
@@ -101,7 +125,7 @@ int main(int argc, char** argv) {
   const std::vector<Vec3> screen = kutlog::examples::project(mesh, camera);
   VisibilityBuffer buffer(*width, *height);
   std::vector<float> image(std::size_t(*width) * *height);
-  std::vector<double> kutlog_ms, pow_ms, fragment_kutlog_ms, fragment_powf_ms;
+  std::vector<double> kutlog_ms, pow_ms, fragment_kutlog_ms, fragment_c_ms, fragment_powf_ms;
   // The fragment functions: the specular term of one pixel, coef F(N.H) max(N.L, 0) by the
   // scalar eval, against the normalized (N.H)^n max(N.L, 0) of pow-based Blinn-Phong.
   const float blinn_phong_coef = (n + 8) / (8 * 3.14159265f);
@@ -130,11 +154,12 @@ int main(int argc, char** argv) {
     workers.clear();
     // Shading, tiles spread over the threads; each thread times its kernel calls only.
     std::vector<double> kutlog_seconds(threads), pow_seconds(threads),
-        fragment_kutlog_seconds(threads), fragment_powf_seconds(threads);
+        fragment_kutlog_seconds(threads), fragment_c_seconds(threads), fragment_powf_seconds(threads);
     for (unsigned w = 0; w < threads; ++w)
       workers.emplace_back([&, w] {
         TileInputs in;
-        std::array<float, kTile * kTile> specular{}, baseline{}, fragment{}, fragment_baseline{};
+        std::array<float, kTile * kTile> specular{}, baseline{}, fragment{}, fragment_c{},
+            fragment_baseline{};
         for (int tile = int(w); tile < tiles_x * tiles_y; tile += int(threads)) {
           const int tx = tile % tiles_x, ty = tile / tiles_x;
           gather_tile(mesh, buffer, camera, to_light, tx, ty, in);
@@ -153,12 +178,20 @@ int main(int argc, char** argv) {
           const auto fragment_start = std::chrono::steady_clock::now();
           for (int lane = 0; lane < kTile * kTile; ++lane)
             if (in.covered[lane]) fragment[lane] = fragment_kutlog(in.t[lane], in.n_dot_l[lane]);
+          const auto fragment_c_start = std::chrono::steady_clock::now();
+          shade_fragments_c(&c_fragment, in.t.data(), in.n_dot_l.data(), in.covered.data(),
+                            fragment_c.data(), kTile * kTile);
           const auto fragment_middle = std::chrono::steady_clock::now();
           for (int lane = 0; lane < kTile * kTile; ++lane)
             if (in.covered[lane]) fragment_baseline[lane] = fragment_powf(in.t[lane], in.n_dot_l[lane]);
           const auto fragment_end = std::chrono::steady_clock::now();
           fragment_kutlog_seconds[w] +=
-              std::chrono::duration<double>(fragment_middle - fragment_start).count();
+              std::chrono::duration<double>(fragment_c_start - fragment_start).count();
+          fragment_c_seconds[w] +=
+              std::chrono::duration<double>(fragment_middle - fragment_c_start).count();
+          const std::array<float, kTile * kTile>& shown =
+              *shading == Shading::stream ? specular
+                                          : *shading == Shading::fragment ? fragment : fragment_c;
           fragment_powf_seconds[w] +=
               std::chrono::duration<double>(fragment_end - fragment_middle).count();
           for (int j = 0; j < kTile; ++j)
@@ -167,7 +200,7 @@ int main(int argc, char** argv) {
               if (x >= *width || y >= *height) continue;
               // A dark glossy glaze: diffuse 0.25 N.L plus the normalized highlight.
               image[std::size_t(y) * *width + x] =
-                  in.covered[lane] ? 0.25f * std::max(in.n_dot_l[lane], 0.0f) + 0.04f * specular[lane] : 1.0f;
+                  in.covered[lane] ? 0.25f * std::max(in.n_dot_l[lane], 0.0f) + 0.04f * shown[lane] : 1.0f;
             }
         }
       });
@@ -177,22 +210,38 @@ int main(int argc, char** argv) {
     pow_ms.push_back(1e3 * *std::max_element(pow_seconds.begin(), pow_seconds.end()));
     fragment_kutlog_ms.push_back(
         1e3 * *std::max_element(fragment_kutlog_seconds.begin(), fragment_kutlog_seconds.end()));
+    fragment_c_ms.push_back(
+        1e3 * *std::max_element(fragment_c_seconds.begin(), fragment_c_seconds.end()));
     fragment_powf_ms.push_back(
         1e3 * *std::max_element(fragment_powf_seconds.begin(), fragment_powf_seconds.end()));
+  }
+  // The frame's bits, FNV-1a over every pixel's float: the C and C++ fragment paths print the
+  // same digest (tests/CMakeLists.txt).
+  std::uint64_t digest = 0xcbf29ce484222325u;
+  for (const float pixel : image) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &pixel, sizeof bits);
+    for (int byte = 0; byte < 4; ++byte)
+      digest = (digest ^ ((bits >> (8 * byte)) & 0xffu)) * 0x100000001b3u;
   }
   OIIO::ImageBuf out(OIIO::ImageSpec(*width, *height, 1, OIIO::TypeDesc::FLOAT), image.data());
   // For viewing: 2x / (1 + x), white at radiance 1.
   for (OIIO::ImageBuf::Iterator<float> it(out); !it.done(); ++it) it[0] = std::min(1.0f, 2 * it[0] / (1 + it[0]));
-  if (!out.write(output, OIIO::TypeDesc::UINT8)) {
+  const std::string_view name(output);
+  const bool eight_bits = name.size() >= 4 && name.substr(name.size() - 4) == ".png";
+  if (!out.write(output, eight_bits ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT)) {
     std::fprintf(stderr, "kutlog-rasterizer: error: %s\n", out.geterror().c_str());
     return 1;
   }
+  std::printf("image digest: %016llx\n", static_cast<unsigned long long>(digest));
   const double k_ms = median(kutlog_ms), p_ms = median(pow_ms);
   std::printf("frame %dx%d, Utah teapot %zu triangles, %u threads, median of %d frames, wrote %s\n",
               *width, *height, mesh.triangles.size(), threads, *frames, output);
   std::printf("shading ms/frame: kutlog=%.3f pow_xsimd=%.3f ratio=%.2f\n", k_ms, p_ms, p_ms / k_ms);
-  const double fk_ms = median(fragment_kutlog_ms), fp_ms = median(fragment_powf_ms);
-  std::printf("per-fragment shading ms/frame: kutlog=%.3f powf=%.3f ratio=%.2f\n", fk_ms, fp_ms,
-              fp_ms / fk_ms);
+  const double fk_ms = median(fragment_kutlog_ms), fc_ms = median(fragment_c_ms),
+               fp_ms = median(fragment_powf_ms);
+  std::printf("per-fragment shading ms/frame: kutlog=%.3f kutlog_c=%.3f powf=%.3f ratio=%.2f\n",
+              fk_ms, fc_ms, fp_ms, fp_ms / fk_ms);
+  kutlog_lobe_destroy(c_lobe);
   return 0;
 }
