@@ -7,10 +7,12 @@
 // docs/accuracy.md.
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <optional>
 #include <string_view>
 
-#include "kutlog/api.hpp"
 #include "kutlog/archs.hpp"
 #include "kutlog/detail/math_functions.hpp"
 
@@ -159,3 +161,5 @@ constexpr std::optional<AccuracyBound> find_accuracy_bound(std::string_view func
 
 }  // namespace kutlog
 KUTLOG_API_END
+
+#endif  // KUTLOG_HAS_CXX20

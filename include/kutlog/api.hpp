@@ -6,9 +6,13 @@
 // friend of the public classes.
 #pragma once
 
+// Below C++20, this one #error and nothing else: every other header of kutlog is empty there
+// (#if KUTLOG_HAS_CXX20), so that the compiler prints no cascade of errors after it.
 #if __cplusplus < 202002L
 #error "kutlog's headers need C++20 (-std=c++20 or later)"
-#endif
+#define KUTLOG_HAS_CXX20 0
+#else
+#define KUTLOG_HAS_CXX20 1
 
 #if defined(__GNUC__) || defined(__clang__)
 #define KUTLOG_API_BEGIN _Pragma("GCC visibility push(default)")
@@ -23,3 +27,5 @@ namespace kutlog::detail {
 // kutlog/inspect.hpp and the library's own dispatch; a friend of each.
 struct Inspector;
 }  // namespace kutlog::detail
+
+#endif  // KUTLOG_HAS_CXX20

@@ -5,10 +5,12 @@
 // equal t, else no overlap. Thread-safe; no allocation per call.
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <cstddef>
 #include <type_traits>
 
-#include "kutlog/api.hpp"
 #include "kutlog/detail/lobe_kernel.hpp"
 #include "kutlog/lobe.hpp"
 
@@ -80,3 +82,5 @@ void schlick(const float* t, float* out, std::size_t count, float n);
 
 }  // namespace kutlog
 KUTLOG_API_END
+
+#endif  // KUTLOG_HAS_CXX20

@@ -9,12 +9,14 @@
 // calls never throw for it (docs/bad-input.md).
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <array>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "kutlog/api.hpp"
 #include "kutlog/archs.hpp"
 
 KUTLOG_API_BEGIN
@@ -64,3 +66,5 @@ void reset_arch();
 
 }  // namespace kutlog
 KUTLOG_API_END
+
+#endif  // KUTLOG_HAS_CXX20

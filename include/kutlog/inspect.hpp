@@ -3,7 +3,9 @@
 // A renderer needs none of it.
 #pragma once
 
-#include "kutlog/api.hpp"
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include "kutlog/detail/lobe_kernel.hpp"
 #include "kutlog/detail/sampler_kernel.hpp"
 #include "kutlog/dispatch.hpp"
@@ -126,3 +128,5 @@ class ScopedArch {
 
 }  // namespace kutlog::inspect
 KUTLOG_API_END
+
+#endif  // KUTLOG_HAS_CXX20

@@ -3,11 +3,13 @@
 // or arrays dispatched to the best arch. How the bounds are measured: docs/accuracy.md.
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
 
-#include "kutlog/api.hpp"
 #include "kutlog/detail/lobe_dispatch.hpp"
 #include "kutlog/detail/lobe_kernel.hpp"
 
@@ -168,3 +170,5 @@ class PerLaneLobe {
 
 }  // namespace kutlog
 KUTLOG_API_END
+
+#endif  // KUTLOG_HAS_CXX20

@@ -8,9 +8,11 @@
 // arch.
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <cstddef>
 
-#include "kutlog/api.hpp"
 #include "kutlog/detail/math_functions.hpp"
 
 KUTLOG_API_BEGIN
@@ -30,3 +32,5 @@ KUTLOG_BINARY_MATH_FUNCTIONS(KUTLOG_DECLARE_BINARY)
 
 }  // namespace kutlog::math
 KUTLOG_API_END
+
+#endif  // KUTLOG_HAS_CXX20

@@ -9,10 +9,11 @@
 // forms: docs/design.md; the article's tables reproduced: docs/article.md.
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <functional>
 #include <numbers>
-
-#include "kutlog/api.hpp"
 
 KUTLOG_API_BEGIN
 namespace kutlog::ref {
@@ -195,3 +196,5 @@ double integrate(const std::function<double(double)>& f, double a, double b,
 
 }  // namespace kutlog::ref
 KUTLOG_API_END
+
+#endif  // KUTLOG_HAS_CXX20

@@ -3,10 +3,12 @@
 // kutlog/sampling_reference.hpp; its bounds are kSamplerBound (kutlog/accuracy.hpp).
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <cstddef>
 #include <type_traits>
 
-#include "kutlog/api.hpp"
 #include "kutlog/detail/sampler_kernel.hpp"
 
 KUTLOG_API_BEGIN
@@ -89,3 +91,5 @@ class LobeSampler {
 
 }  // namespace kutlog
 KUTLOG_API_END
+
+#endif  // KUTLOG_HAS_CXX20

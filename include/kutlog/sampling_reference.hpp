@@ -17,10 +17,12 @@
 // constructor validates (n, k, Q) as kutlog/reference.hpp does.
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <array>
 #include <optional>
 
-#include "kutlog/api.hpp"
 #include "kutlog/reference.hpp"
 #include "kutlog/sampling.hpp"
 
@@ -142,3 +144,5 @@ class KutlogPhong {
 
 }  // namespace kutlog::ref
 KUTLOG_API_END
+
+#endif  // KUTLOG_HAS_CXX20

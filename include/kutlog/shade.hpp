@@ -13,10 +13,12 @@
 // written. Thread-safe, no allocation; nothing thrown once a Lobe exists.
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <cstddef>
 #include <cstdint>
 
-#include "kutlog/api.hpp"
 #include "kutlog/lobe.hpp"
 
 KUTLOG_API_BEGIN
@@ -63,3 +65,5 @@ void shade(const Lobe& lobe, const float* t, const float* n_dot_l, float* out, s
 
 }  // namespace kutlog
 KUTLOG_API_END
+
+#endif  // KUTLOG_HAS_CXX20

@@ -1,6 +1,9 @@
 // kutlog/detail/float_ulp.hpp: the ulp of a float, from a double's exponent bits (fast).
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <algorithm>
 #include <bit>
 #include <cstdint>
@@ -21,3 +24,5 @@ constexpr int float_ulp_exponent(double value) {
 constexpr double ulp_of_float(double value) { return power_of_two(float_ulp_exponent(value)); }
 
 }  // namespace kutlog::detail
+
+#endif  // KUTLOG_HAS_CXX20

@@ -1,6 +1,9 @@
 // kutlog/detail/integer_power.hpp: base^exponent by squaring, for doubles and xsimd batches.
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 namespace kutlog::detail {
 
 // base^exponent, exponent >= 0. Inlined, and tagged by the arch whose flags compile it, so
@@ -22,3 +25,5 @@ template <class Tag = void, class T>
 }
 
 }  // namespace kutlog::detail
+
+#endif  // KUTLOG_HAS_CXX20

@@ -2,10 +2,12 @@
 // eval reads (filled by src/arch/lobe_loops.hpp, chosen by src/dispatch.cpp).
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <atomic>
 #include <cstddef>
 
-#include "kutlog/api.hpp"
 #include "kutlog/detail/lobe_kernel.hpp"
 
 KUTLOG_API_BEGIN
@@ -41,3 +43,5 @@ extern std::atomic<const LobeArrayKernels*> active_lobe_loops;
 
 }  // namespace kutlog
 KUTLOG_API_END
+
+#endif  // KUTLOG_HAS_CXX20

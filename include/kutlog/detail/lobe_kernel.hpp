@@ -4,6 +4,9 @@
 // kutlog/inspect.hpp. Method: docs/design.md.
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -13,7 +16,6 @@
 #include <type_traits>
 #include <vector>
 
-#include "kutlog/api.hpp"
 #include "kutlog/detail/integer_power.hpp"
 #include "kutlog/kutlog.h"
 
@@ -356,3 +358,5 @@ struct KernelCertificate {
 
 }  // namespace kutlog::detail
 KUTLOG_API_END
+
+#endif  // KUTLOG_HAS_CXX20

@@ -2,12 +2,13 @@
 // by its setup (src/sampling.cpp) and read by kutlog/simd/sampling.hpp.
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <algorithm>
 #include <array>
 #include <bit>
 #include <cstdint>
-
-#include "kutlog/api.hpp"
 
 KUTLOG_API_BEGIN
 namespace kutlog::detail {
@@ -88,3 +89,5 @@ struct SamplerKernel {
 
 }  // namespace kutlog::detail
 KUTLOG_API_END
+
+#endif  // KUTLOG_HAS_CXX20

@@ -2,6 +2,9 @@
 // code that instantiates the kernels of kutlog/simd/ once per arch as the library does.
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include "kutlog/dispatch.hpp"
 #include "kutlog/simd/xsimd.hpp"
 
@@ -22,3 +25,5 @@ template <Arch arch>
 using xsimd_arch = typename XsimdArchOf<arch>::type;
 
 }  // namespace kutlog::simd
+
+#endif  // KUTLOG_HAS_CXX20

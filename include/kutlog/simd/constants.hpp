@@ -2,6 +2,9 @@
 // first, from tools/fit/fit_polynomials.py), shared with scalar code, so without xsimd.
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <array>
 #include <cstdint>
 
@@ -43,3 +46,5 @@ inline constexpr float kTwoTo23 = 8388608.0f;
 }  // namespace constants
 
 }  // namespace kutlog::simd
+
+#endif  // KUTLOG_HAS_CXX20

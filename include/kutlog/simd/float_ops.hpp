@@ -7,6 +7,9 @@
 // inlines them and wants the documented bounds).
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <array>
 #include <cstddef>
 #include <type_traits>
@@ -124,3 +127,5 @@ inline doubles<Arch> reciprocal_estimate(doubles<Arch> x) {
 }
 
 }  // namespace kutlog::simd
+
+#endif  // KUTLOG_HAS_CXX20

@@ -3,6 +3,9 @@
 // the reference's data rule: t > 1 gives F(1), t <= 0 (or below the cut) 0, NaN NaN.
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <array>
 #include <utility>
 
@@ -405,3 +408,5 @@ inline floats<Arch> schlick(floats<Arch> t, floats<Arch> n) {
 }
 
 }  // namespace kutlog::simd
+
+#endif  // KUTLOG_HAS_CXX20

@@ -3,6 +3,9 @@
 // and -ffp-contract=off. Methods: docs/design.md, "The SIMD math kernels".
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -263,3 +266,5 @@ inline floats<Arch> pow_u10(floats<Arch> x, floats<Arch> y) {
 }
 
 }  // namespace kutlog::simd
+
+#endif  // KUTLOG_HAS_CXX20

@@ -3,6 +3,9 @@
 // kutlog/sampling.hpp's.
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -379,3 +382,5 @@ inline SampledDirection sample(const kutlog::detail::SamplerKernel& kernel, floa
 }  // namespace one_sample
 
 }  // namespace kutlog::simd
+
+#endif  // KUTLOG_HAS_CXX20

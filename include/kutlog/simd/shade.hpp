@@ -3,6 +3,9 @@
 // store that leaves masked lanes alone).
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <cstdint>
 
 #include "kutlog/simd/float_ops.hpp"
@@ -54,3 +57,5 @@ inline void store_selected(float* out, floats<Arch> value,
 }
 
 }  // namespace kutlog::simd
+
+#endif  // KUTLOG_HAS_CXX20

@@ -2,6 +2,9 @@
 // kutlog/simd/arch/ share.
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <cstdint>
 #include <type_traits>
 
@@ -39,3 +42,5 @@ struct Pair {
 };
 
 }  // namespace kutlog::simd
+
+#endif  // KUTLOG_HAS_CXX20

@@ -3,6 +3,9 @@
 // square root and reciprocal, and the portable arch where xsimd has none.
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 // Before xsimd: its qualified kernel calls bind where written.
 #include "kutlog/simd/detail/portable.hpp"
 
@@ -76,3 +79,5 @@ inline batch<float, neon64> reciprocal<neon64>(batch<float, neon64> const& x,
 }
 }  // namespace xsimd::kernel
 #endif
+
+#endif  // KUTLOG_HAS_CXX20

@@ -4,6 +4,9 @@
 // targets AVX.
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -118,3 +121,5 @@ inline std::array<floats<Arch>, 8> transpose_rows(const Row& row, avx2_tag) {
 
 }  // namespace kutlog::simd::ops
 #endif
+
+#endif  // KUTLOG_HAS_CXX20

@@ -4,6 +4,9 @@
 // where the compiler targets AVX-512F.
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <cstddef>
 #include <cstdint>
 
@@ -110,3 +113,5 @@ inline floats<Arch> coarse_coefficient(const float* row, ints<Arch> cell, avx512
 
 }  // namespace kutlog::simd::ops
 #endif
+
+#endif  // KUTLOG_HAS_CXX20

@@ -3,6 +3,9 @@
 // without its own takes. Adding an arch adds its file to the list below (docs/design.md).
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -121,3 +124,5 @@ inline std::array<floats<Arch>, 8> transpose_rows(const Row& row, generic_tag) {
 }
 
 }  // namespace kutlog::simd::ops
+
+#endif  // KUTLOG_HAS_CXX20

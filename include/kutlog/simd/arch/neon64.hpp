@@ -4,6 +4,9 @@
 // Compiled only where the compiler targets AArch64.
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include "kutlog/simd/types.hpp"
 
 #if XSIMD_WITH_NEON64
@@ -31,3 +34,5 @@ inline floats<Arch> narrow(doubles<Arch> low, doubles<Arch> high, neon64_tag) {
 
 }  // namespace kutlog::simd::ops
 #endif
+
+#endif  // KUTLOG_HAS_CXX20

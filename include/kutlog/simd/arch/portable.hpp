@@ -3,6 +3,9 @@
 // tag (kutlog/simd/arch/avx512.hpp says how): 4 float lanes, 2 double lanes.
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <cstddef>
 
 #include "kutlog/simd/types.hpp"
@@ -30,3 +33,5 @@ inline floats<Arch> narrow(doubles<Arch> low, doubles<Arch> high, portable_tag) 
 }
 
 }  // namespace kutlog::simd::ops
+
+#endif  // KUTLOG_HAS_CXX20

@@ -3,6 +3,9 @@
 // (kutlog/simd/arch/avx512.hpp says how). Compiled only where the compiler targets SSE2.
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -101,3 +104,5 @@ inline std::array<floats<Arch>, 8> transpose_rows(const Row& row, sse4_1_tag) {
 
 }  // namespace kutlog::simd::ops
 #endif
+
+#endif  // KUTLOG_HAS_CXX20

@@ -16,6 +16,9 @@
 // kutlog/simd/xsimd.hpp includes it first.
 #pragma once
 
+#include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
+#if KUTLOG_HAS_CXX20
+
 #include <bit>
 #include <cmath>
 #include <cstddef>
@@ -464,3 +467,5 @@ inline batch<To, A> fast_cast(batch<From, A> const& self, batch<To, A> const&,
 
 }  // namespace kernel
 }  // namespace xsimd
+
+#endif  // KUTLOG_HAS_CXX20
