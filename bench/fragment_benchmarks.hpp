@@ -27,6 +27,9 @@ void register_native_fragment_benchmarks();  // bench/fragment_native.cpp, where
 // The rows of kutlog_eval from C (bench/fragment_c.c) at those of register_fragment_benchmarks.
 void register_c_fragment_benchmarks(double n, int k, const std::string& at,
                                     const std::vector<float>& cosines);
+// fragment/material_*/materials:<count>: one lobe per material of a scene, kept in the material
+// by value, by pointer or as a C fragment handle, against powf (bench/fragment_c_benchmarks.cpp).
+void register_material_benchmarks();
 
 // Internal linkage: each file that registers these compiles its own copy, with its own flags.
 namespace {

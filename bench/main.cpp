@@ -72,6 +72,7 @@ void register_scalar_benchmarks() {
 #undef KUTLOG_STD_UNARY
 #undef KUTLOG_STD_BINARY
   register_fragment_benchmarks("");
+  register_material_benchmarks();
 #ifdef KUTLOG_BENCH_NATIVE
   register_native_fragment_benchmarks();
 #endif

@@ -72,6 +72,7 @@ std::vector<RatioTable> RatioCollector::ratio_tables() const {
   add(RatioKind::math, math_ratios());
   add(RatioKind::lobe, lobe_ratios());
   add(RatioKind::fragment, fragment_ratios());
+  add(RatioKind::material, material_ratios());
   add(RatioKind::span, span_ratios());
   add(RatioKind::tile, tile_ratios());
   add(RatioKind::sampling, sampling_ratios());
@@ -186,6 +187,29 @@ std::optional<tools::Table> RatioCollector::fragment_ratios() const {
                              ""});
         }
       }
+  return any ? std::optional(std::move(table)) : std::nullopt;
+}
+
+std::optional<tools::Table> RatioCollector::material_ratios() const {
+  // Where a material keeps its lobe: ns per fragment, and speed over powf's and over a Lobe's
+  // kept by value.
+  tools::Table table({"materials", "lobe kept as", "ns/fragment", "powf / it", "by value / it"});
+  bool any = false;
+  for (int count : {16, 256}) {
+    const std::string at = "/materials:" + std::to_string(count);
+    const double powf = rate("fragment/material_powf" + at),
+                 by_value = rate("fragment/material_lobe" + at);
+    if (powf == 0 || by_value == 0) continue;
+    any = true;
+    for (const auto [row, shown] : {std::pair{"material_lobe", "Lobe, by value (4.6 KB)"},
+                                    std::pair{"material_lobe_pointer", "const Lobe*"},
+                                    std::pair{"material_fragment_handle",
+                                              "kutlog_fragment (32 bytes)"},
+                                    std::pair{"material_powf", "powf's float n"}})
+      if (const double rate_of = rate("fragment/" + std::string(row) + at); rate_of > 0)
+        table.add_row({std::to_string(count), shown, fmt::format("{:.2f}", 1e9 / rate_of),
+                       times(rate_of / powf), times(rate_of / by_value)});
+  }
   return any ? std::optional(std::move(table)) : std::nullopt;
 }
 

@@ -16,7 +16,7 @@
 namespace kutlog::bench {
 
 // What a ratio table compares; the benchmark page explains each kind.
-enum class RatioKind { math, lobe, fragment, span, tile, sampling };
+enum class RatioKind { math, lobe, fragment, material, span, tile, sampling };
 
 struct RatioTable {
   RatioKind kind;
@@ -55,6 +55,7 @@ class RatioCollector : public benchmark::BenchmarkReporter {
   std::optional<tools::Table> math_ratios() const;
   std::optional<tools::Table> lobe_ratios() const;
   std::optional<tools::Table> fragment_ratios() const;
+  std::optional<tools::Table> material_ratios() const;
   std::optional<tools::Table> span_ratios() const;
   std::optional<tools::Table> tile_ratios() const;
   std::optional<tools::Table> sampling_ratios() const;
