@@ -22,24 +22,18 @@
 #include "kutlog/dispatch.hpp"
 #include "kutlog/inspect.hpp"
 #include "lobe_accuracy.hpp"
+#include "recorded_data.hpp"
 
 namespace kutlog {
 namespace {
 
-#if defined(__aarch64__)
-constexpr const char* kPlatformName = "aarch64";
-#else
-constexpr const char* kPlatformName = "x86_64";
-#endif
 // How much a certificate may grow over its record before the test fails.
 constexpr double kLoosening = 1.1;
 constexpr inspect::Arithmetic kArithmetics[] = {
     inspect::Arithmetic::unfused, inspect::Arithmetic::fused, inspect::Arithmetic::scalar};
 constexpr const char* kArithmeticNames[] = {"unfused", "fused", "scalar"};
 
-std::string certificate_file() {
-  return std::string(KUTLOG_TEST_DATA_DIR) + "/certificates-" + kPlatformName + ".txt";
-}
+std::string certificate_file() { return recorded_data_file("certificates", false); }
 
 // "n=1000 k=5 Q=0.5 precise exact_coef fused": one kernel of the grid.
 std::string kernel_key(const LobeCase& lobe, Variant variant, Normalization normalization,

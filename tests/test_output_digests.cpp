@@ -25,27 +25,14 @@
 #include "kutlog/math.hpp"
 #include "kutlog/sampling.hpp"
 #include "kutlog/shade.hpp"
+#include "recorded_data.hpp"
 
 namespace kutlog {
 namespace {
 
-#if defined(__aarch64__)
-constexpr const char* kPlatformName = "aarch64";
-#else
-constexpr const char* kPlatformName = "x86_64";
-#endif
-// The compiler that built the kernels: clang-14 and GCC 12 round a few kernels differently
-// (6 of 337 outputs on x86-64), so each has its own record; one without a record skips.
-#if defined(__clang__)
-constexpr const char* kCompilerName = "clang";
-#else
-constexpr const char* kCompilerName = "gcc";
-#endif
-
-std::string digest_file() {
-  return std::string(KUTLOG_TEST_DATA_DIR) + "/output-digests-" + kPlatformName + "-" +
-         kCompilerName + ".txt";
-}
+// Per compiler: clang-14 and GCC 12 round a few kernels differently (6 of 337 outputs on
+// x86-64), so each has its own record; one without a record skips.
+std::string digest_file() { return recorded_data_file("output-digests", true); }
 
 // FNV-1a over the bits of each float, NaN payloads included.
 std::uint64_t digest(const std::vector<float>& values) {
