@@ -40,9 +40,9 @@ const CpuWords& cpu_words();
 // has_features of this CPU.
 bool cpu_has_features(std::string_view features);
 
-// Throws std::runtime_error if this CPU runs none of the compiled archs (src/dispatch.cpp). The
-// constructors of Lobe, PerLaneLobe, PowerPoly and LobeSampler call it, so that their noexcept
-// array calls always find an arch.
+// Throws std::runtime_error if this CPU runs none of the compiled archs (src/arch_choice.cpp).
+// The constructors of Lobe, PerLaneLobe, PowerPoly and LobeSampler call it, so that their
+// noexcept array calls always find an arch.
 void require_runnable_arch();
 
 }  // namespace kutlog::detail

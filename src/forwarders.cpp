@@ -32,9 +32,6 @@ KUTLOG_BINARY_MATH_FUNCTIONS(KUTLOG_FORWARD_BINARY)
 #undef KUTLOG_FORWARD_BINARY
 }  // namespace math
 
-float Lobe::eval_by_kernel(float t, Variant variant, Normalization normalization) const noexcept {
-  return kernels_[kernel_index(variant, normalization, detail::Arithmetic::scalar)].evaluate(t);
-}
 void Lobe::eval_out_of_line(const float* t, float* out, std::size_t count, Variant variant,
                             Normalization normalization) const noexcept {
   const detail::KernelTable& table = active_table();

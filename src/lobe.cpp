@@ -11,6 +11,7 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -27,6 +28,15 @@
 
 namespace kutlog {
 using detail::Real;
+
+#if defined(__ELF__)
+// Weak: the array path links it (src/dispatch.cpp), and only then are a Lobe's SIMD kernels
+// fitted (docs/design.md, "Footprint"). Elsewhere than ELF every Lobe fits them.
+namespace detail {
+[[gnu::weak]] decltype(measured_epicenter_ulp) measured_epicenter_ulp;
+}  // namespace detail
+#endif
+
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -355,6 +365,17 @@ CertifiedKernel fit_kernel(const ref::KutlogLobe& reference, float t_cut,
                            std::to_string(reference.Q()) + ") meets the bound of its variant");
 }
 
+// The arithmetics whose kernels a Lobe fits: the SIMD ones only where the program links the
+// array path, which alone runs them.
+std::span<const detail::Arithmetic> fitted_arithmetics() {
+  static constexpr detail::Arithmetic kAll[] = {
+      detail::Arithmetic::unfused, detail::Arithmetic::fused, detail::Arithmetic::scalar};
+#if defined(__ELF__)
+  if (&detail::measured_epicenter_ulp == nullptr) return std::span(kAll).last(1);
+#endif
+  return kAll;
+}
+
 // A variant's promise, times the tests' factor (src/lobe_setup_hook.hpp).
 Target target_of(Variant variant) {
   const Target& promised = variant == Variant::fast ? kFastTarget : kPreciseTarget;
@@ -419,8 +440,7 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
   detail::ScalarPiecesFitter pieces_fitter(shape, t_cut_);
   for (Variant variant : {Variant::precise, Variant::fast})
     for (Normalization normalization : {Normalization::none, Normalization::exact_coef})
-      for (detail::Arithmetic arithmetic :
-           {detail::Arithmetic::unfused, detail::Arithmetic::fused, detail::Arithmetic::scalar}) {
+      for (detail::Arithmetic arithmetic : fitted_arithmetics()) {
         const Target target = target_of(variant);
         const int index = kernel_index(variant, normalization, arithmetic);
         const double scale = normalization == Normalization::exact_coef ? coef_exact_ : 1.0;
@@ -441,6 +461,10 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
         certificates_[index] = {fitted.certified.abs_error, fitted.certified.epicenter_ulp};
         array_slots_[index] = std::uint8_t(detail::LobeArrayKernels::slot_of(kernels_[index]));
       }
+}
+
+float Lobe::eval_by_kernel(float t, Variant variant, Normalization normalization) const noexcept {
+  return kernels_[kernel_index(variant, normalization, detail::Arithmetic::scalar)].evaluate(t);
 }
 
 }  // namespace kutlog

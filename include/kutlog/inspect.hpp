@@ -35,6 +35,8 @@ struct Inspector {
   static double limit(const LobeSampler& sampler) { return sampler.limit_; }
   static double fit_error(const LobeSampler& sampler) { return sampler.fit_error_; }
 };
+// Links the array path, without which a Lobe fits no SIMD kernel to inspect (src/lobe.cpp).
+[[gnu::used]] inline constexpr auto* kArrayPathAnchor = &active_lobe_loops;
 }  // namespace kutlog::detail
 
 KUTLOG_API_BEGIN
