@@ -5,6 +5,7 @@
 #include <atomic>
 
 #include "arch/kernel_table.hpp"
+#include "kutlog/detail/inspector.hpp"
 
 namespace kutlog::detail {
 
@@ -12,7 +13,7 @@ namespace kutlog::detail {
 [[gnu::noinline, gnu::cold]] const KernelTable& fill_active_table();
 
 inline const KernelTable& active_table() {
-  const LobeArrayKernels* loops = active_lobe_loops.load(std::memory_order_acquire);
+  const LobeArrayKernels* loops = Inspector::active_loops().load(std::memory_order_acquire);
   return loops ? static_cast<const KernelTable&>(*loops) : fill_active_table();
 }
 

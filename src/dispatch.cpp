@@ -31,7 +31,7 @@ const detail::KernelTable& table_of(Arch arch) {
 
 }  // namespace
 
-std::atomic<const detail::LobeArrayKernels*> detail::active_lobe_loops{nullptr};
+std::atomic<const detail::LobeArrayKernels*> Lobe::active_loops_{nullptr};
 
 // The active table is a pointer, set by force_arch, cleared by reset_arch, filled here on first
 // use after either. Release and acquire: the thread reading it may not be the one that built
@@ -39,7 +39,7 @@ std::atomic<const detail::LobeArrayKernels*> detail::active_lobe_loops{nullptr};
 const detail::KernelTable& detail::fill_active_table() {
   const detail::KernelTable* table = &table_of(active_arch());
   const detail::LobeArrayKernels* expected = nullptr;  // a force_arch since then wins
-  return detail::active_lobe_loops.compare_exchange_strong(
+  return detail::Inspector::active_loops().compare_exchange_strong(
              expected, table, std::memory_order_acq_rel, std::memory_order_acquire)
              ? *table
              : static_cast<const detail::KernelTable&>(*expected);
@@ -47,14 +47,14 @@ const detail::KernelTable& detail::fill_active_table() {
 
 void force_arch(Arch arch) {
   detail::choose_forced_arch(arch);
-  detail::active_lobe_loops.store(&table_of(arch), std::memory_order_release);
+  detail::Inspector::active_loops().store(&table_of(arch), std::memory_order_release);
 }
 
 void force_arch(std::string_view name) { force_arch(parse_arch(name)); }
 
 void reset_arch() {
   detail::clear_forced_arch();
-  detail::active_lobe_loops.store(nullptr, std::memory_order_relaxed);
+  detail::Inspector::active_loops().store(nullptr, std::memory_order_relaxed);
 }
 
 const detail::KernelTable& detail::best_kernel_table() {

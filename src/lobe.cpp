@@ -25,6 +25,7 @@
 #include "lobe_setup_hook.hpp"
 #include "polynomial_fit.hpp"
 #include "scalar_pieces.hpp"
+#include "scalar_kernel.hpp"
 
 namespace kutlog {
 using detail::Real;
@@ -463,8 +464,12 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
       }
 }
 
+float detail::evaluate_scalar_kernel(const LobeKernel& kernel, float t) noexcept {
+  return kernel.evaluate(t);
+}
 float Lobe::eval_by_kernel(float t, Variant variant, Normalization normalization) const noexcept {
-  return kernels_[kernel_index(variant, normalization, detail::Arithmetic::scalar)].evaluate(t);
+  return detail::evaluate_scalar_kernel(
+      kernels_[kernel_index(variant, normalization, detail::Arithmetic::scalar)], t);
 }
 
 }  // namespace kutlog

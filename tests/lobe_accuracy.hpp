@@ -66,7 +66,7 @@ struct LargestErrors {
 // the scalar path's.
 inline inspect::Arithmetic arithmetic_of(tools::LobeEvaluator evaluate) {
   if (evaluate != tools::evaluate_array) return inspect::Arithmetic::scalar;
-  return detail::active_lobe_loops.load()->fused_fma ? inspect::Arithmetic::fused
+  return detail::Inspector::active_loops().load()->fused_fma ? inspect::Arithmetic::fused
                                                      : inspect::Arithmetic::unfused;
 }
 

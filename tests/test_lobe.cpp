@@ -255,7 +255,7 @@ TEST_P(LobePerArch, ShortSpansEqualTheLongArrayForEveryKernel) {
   using Loops = detail::LobeArrayKernels;
   float probe = 1;
   Lobe(10, 1, 0.5).eval(&probe, &probe, 1);  // the active arch's loops, from here on
-  const Loops& loops = *detail::active_lobe_loops.load();
+  const Loops& loops = *detail::Inspector::active_loops().load();
   std::vector<LobeCase> candidates = accuracy_grid();
   for (const LobeCase& c : random_lobes(400, 2031)) candidates.push_back(c);
   struct SlotKernel {

@@ -152,7 +152,7 @@ TEST_P(ShadePerArch, VectorsGiveEvalOfTheirFloatCosinesExactly) {
   for (const auto& [n, k, Q] : {std::tuple{1000.0, 3, 0.5}, std::tuple{100.0, 5, 0.3}}) {
     const Lobe lobe(n, k, Q);
     lobe.eval(t.data(), evaluated.data(), 1);  // the active arch's loops, from here on
-    const FloatCosines cosines{detail::active_lobe_loops.load()->fused_fma};
+    const FloatCosines cosines{detail::Inspector::active_loops().load()->fused_fma};
     for (Reflection reflection : {Reflection::blinn, Reflection::phong}) {
       ShadeOptions options;
       options.reflection = reflection;

@@ -6,6 +6,7 @@
 #include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
 #if KUTLOG_HAS_CXX20
 
+#include "kutlog/detail/inspector.hpp"
 #include "kutlog/detail/lobe_kernel.hpp"
 #include "kutlog/detail/sampler_kernel.hpp"
 #include "kutlog/dispatch.hpp"
@@ -13,30 +14,8 @@
 #include "kutlog/sampling.hpp"
 
 namespace kutlog::detail {
-struct Inspector {
-  static const LobeKernel& kernel(const Lobe& lobe, int index) { return lobe.kernels_[index]; }
-  static const KernelCertificate& certificate(const Lobe& lobe, int index) {
-    return lobe.certificates_[index];
-  }
-  static int index(Variant variant, Normalization normalization, Arithmetic arithmetic) {
-    return Lobe::kernel_index(variant, normalization, arithmetic);
-  }
-  static const ScalarPieces& precise_pieces(const Lobe& lobe, Normalization normalization) {
-    return lobe.precise_pieces_[int(normalization)];
-  }
-  static const FastScalarPieces& fast_pieces(const Lobe& lobe, Normalization normalization) {
-    return lobe.fast_pieces_[int(normalization)];
-  }
-  static double c(const Lobe& lobe) { return lobe.c_; }
-  static const PerLaneKernel& kernel(const PerLaneLobe& lobe, Variant variant) {
-    return lobe.kernels_[int(variant)];
-  }
-  static const SamplerKernel& kernel(const LobeSampler& sampler) { return sampler.kernel_; }
-  static double limit(const LobeSampler& sampler) { return sampler.limit_; }
-  static double fit_error(const LobeSampler& sampler) { return sampler.fit_error_; }
-};
 // Links the array path, without which a Lobe fits no SIMD kernel to inspect (src/lobe.cpp).
-[[gnu::used]] inline constexpr auto* kArrayPathAnchor = &active_lobe_loops;
+[[gnu::used]] inline constexpr auto* kArrayPathAnchor = &Inspector::active_loops;
 }  // namespace kutlog::detail
 
 KUTLOG_API_BEGIN

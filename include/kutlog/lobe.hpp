@@ -6,6 +6,7 @@
 #include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
 #if KUTLOG_HAS_CXX20
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
@@ -87,8 +88,7 @@ class Lobe {
   // variant and normalization fold the kernel's index.
   void eval(const float* t, float* out, std::size_t count, Variant variant = Variant::precise,
             Normalization normalization = Normalization::none) const noexcept {
-    const detail::LobeArrayKernels* loops =
-        detail::active_lobe_loops.load(std::memory_order_acquire);
+    const detail::LobeArrayKernels* loops = active_loops_.load(std::memory_order_acquire);
     if (!loops) [[unlikely]]
       return eval_out_of_line(t, out, count, variant, normalization);
     const int index =
@@ -106,6 +106,10 @@ class Lobe {
                                     detail::Arithmetic arithmetic) {
     return (int(variant) * 2 + int(normalization)) * 3 + int(arithmetic);
   }
+
+  // The active arch's loops, null until the first array call (src/dispatch.cpp): a member, so
+  // that the shared library exports it as the class's, not as a detail symbol.
+  static std::atomic<const detail::LobeArrayKernels*> active_loops_;
 
   double n_, Q_;
   int k_;

@@ -63,7 +63,7 @@ struct EpicenterReference {
   X(mul_add_rounds_once, mul_add_rounds_once, bool())
 
 // A LobeArrayKernels first (its fused_fma: which of a Lobe's kernels this arch runs), so that
-// the active table is what detail::active_lobe_loops points to (kutlog/lobe.hpp).
+// the active table is what Lobe::active_loops_ points to (kutlog/lobe.hpp).
 struct KernelTable : LobeArrayKernels {
 #define KUTLOG_UNARY_SLOT(function, kernel, ...) UnaryArrayKernel kernel;
 #define KUTLOG_BINARY_SLOTS(function, kernel, ...) \

@@ -1,8 +1,9 @@
 # cmake -DCOMPILER=<c++> "-DFLAGS=<flags;...>" "-DINCLUDES=<dir;...>" -DLIBRARY=<libkutlog.a>
 #   -DSOURCE=<footprint.cpp> -DBINARY=<work dir> -DNM=<nm> -DSIZE=<size> -DARCHS=<count>
 #   -DLIMIT=<bytes, or empty: no limit> ["-DEMULATOR=<command;...>"] -P footprint.cmake
-# Links footprint.cpp's programs statically against libkutlog.a, as a renderer would, with and
-# without --gc-sections. The one whose only kutlog calls are Lobe's setup and scalar eval must
+# Links footprint.cpp's programs (and footprint.c's, the same through the C API) statically
+# against libkutlog.a, as a renderer would, with and without --gc-sections. The one whose only
+# kutlog calls are Lobe's setup and scalar eval, in C++ or C, must
 # link no kernel table and at most LIMIT bytes of kutlog (its text and data less those of the
 # same loops with std::pow). Those that also call the array eval or read the SIMD kernels
 # (kutlog/inspect.hpp) must link every arch's table and find the SIMD kernels fitted; all give
@@ -11,9 +12,17 @@ file(MAKE_DIRECTORY ${BINARY})
 list(TRANSFORM INCLUDES PREPEND -I)
 
 # Builds the program of that variant (the suffix of a footprint.cpp macro).
+# C: footprint.c, the scalar program through the C API, compiled as C99 and linked with what
+# kutlog.pc's Libs.private names.
 function(build_program program variant link_flags)
-  execute_process(COMMAND ${COMPILER} -std=c++20 -O2 ${FLAGS} -DKUTLOG_FOOTPRINT_${variant}
-                          ${INCLUDES} ${SOURCE} ${LIBRARY} ${link_flags} -o ${program}
+  set(source -std=c++20 ${SOURCE})
+  if(variant STREQUAL "C")
+    get_filename_component(directory ${SOURCE} DIRECTORY)
+    set(source -x c -std=c99 ${directory}/footprint.c -x none)
+    set(runtime -lstdc++ -lm)
+  endif()
+  execute_process(COMMAND ${COMPILER} -O2 ${FLAGS} -DKUTLOG_FOOTPRINT_${variant} ${INCLUDES}
+                          ${source} ${LIBRARY} ${runtime} ${link_flags} -o ${program}
                   COMMAND_ERROR_IS_FATAL ANY)
 endfunction()
 
@@ -51,17 +60,17 @@ foreach(link_flags "" "-Wl,--gc-sections")
   endif()
   build_program(${BINARY}/pow${link_flags} POW "${link_flags}")
   measure(pow_bytes ${BINARY}/pow${link_flags})
-  foreach(variant SCALAR ARRAY INSPECT)
+  foreach(variant SCALAR C ARRAY INSPECT)
     set(program ${BINARY}/${variant}${link_flags})
     build_program(${program} ${variant} "${link_flags}")
     measure(bytes ${program})
     math(EXPR kutlog_bytes "${bytes} - ${pow_bytes}")
     count_tables(tables ${program})
     message(STATUS "${variant} ${linked}: ${kutlog_bytes} bytes of kutlog, ${tables} kernel tables")
-    if(variant STREQUAL "SCALAR")
+    if(variant MATCHES "^(SCALAR|C)$")
       if((LIMIT AND kutlog_bytes GREATER LIMIT) OR NOT tables EQUAL 0)
-        message(FATAL_ERROR "Lobe's scalar eval alone links ${kutlog_bytes} bytes of kutlog "
-                            "(at most ${LIMIT}) and ${tables} kernel tables (none)")
+        message(FATAL_ERROR "Lobe's scalar eval alone (${variant}) links ${kutlog_bytes} bytes "
+                            "of kutlog (at most ${LIMIT}) and ${tables} kernel tables (none)")
       endif()
     elseif(NOT tables EQUAL ARCHS)
       message(FATAL_ERROR "${variant} links ${tables} kernel tables, not every arch's ${ARCHS}")

@@ -1,5 +1,6 @@
 // kutlog/detail/lobe_dispatch.hpp: the per-arch tables of lobe loops that Lobe's inline array
-// eval reads (filled by src/arch/lobe_loops.hpp, chosen by src/dispatch.cpp).
+// eval reads (filled by src/arch/lobe_loops.hpp; the active one is Lobe::active_loops_, set by
+// src/dispatch.cpp).
 #pragma once
 
 #include "kutlog/api.hpp"  // below C++20 its #error, and this header is empty
@@ -37,8 +38,6 @@ struct LobeArrayKernels {
   }
   LobeArrayKernel of(const LobeKernel& kernel) const { return by_slot[slot_of(kernel)]; }
 };
-// The active arch's loops; null until the first array call (src/dispatch.cpp).
-extern std::atomic<const LobeArrayKernels*> active_lobe_loops;
 }  // namespace detail
 
 }  // namespace kutlog
