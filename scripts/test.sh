@@ -58,7 +58,7 @@ stage_done aarch64
 # ThreadSanitizer on the tests that run kutlog from many threads at once (setup and evaluation,
 # and the dispatch's first use): only their binaries are built, in build-tsan.
 tsan_dir=${KUTLOG_TSAN_BUILD_DIR:-build-tsan}
-cmake -S . -B "$tsan_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
+cmake -S . -B "$tsan_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_C_COMPILER=clang-14 \
   -DKUTLOG_THREAD_SANITIZE=ON -DKUTLOG_BENCH=OFF -DCMAKE_COMPILE_WARNING_AS_ERROR=ON >/dev/null
 cmake --build "$tsan_dir" -j "${KUTLOG_JOBS:-2}" --target kutlog-test-threads kutlog-test-dispatch
 "$tsan_dir/tests/kutlog-test-threads"
@@ -67,7 +67,7 @@ stage_done "thread sanitizer"
 
 sanitize_dir=${KUTLOG_SANITIZE_BUILD_DIR:-build-sanitize}
 KUTLOG_BUILD_DIR=$sanitize_dir bash scripts/build.sh -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_COMPILER=clang++-14 -DKUTLOG_SANITIZE=ON -DKUTLOG_FUZZ=ON
+  -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_C_COMPILER=clang-14 -DKUTLOG_SANITIZE=ON -DKUTLOG_FUZZ=ON
 stage_done "sanitize build"
 ctest --test-dir "$sanitize_dir" -LE exhaustive -j "${KUTLOG_JOBS:-2}" --output-on-failure
 stage_done "sanitize tests"

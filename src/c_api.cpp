@@ -123,7 +123,7 @@ kutlog_status kutlog_shade_cosines(const kutlog_lobe* lobe, const float* t, cons
 kutlog_status kutlog_sampler_create(double n, int k, double Q, kutlog_lobe_use use,
                                     kutlog_sampler** sampler, kutlog_error* error) {
   if (const kutlog_status status = Check(error).in_range(
-          int(use), 2, "use", "KUTLOG_USE_MICROFACET or KUTLOG_USE_PHONG")) {
+          use, 2, "use", "KUTLOG_USE_MICROFACET or KUTLOG_USE_PHONG")) {
     if (sampler) *sampler = nullptr;
     return status;
   }

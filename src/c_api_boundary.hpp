@@ -80,16 +80,16 @@ class Check {
     return *this;
   }
   Check& variant(kutlog_variant variant, const char* name = "variant") {
-    return in_range(int(variant), 2, name, "KUTLOG_PRECISE or KUTLOG_FAST");
+    return in_range(variant, 2, name, "KUTLOG_PRECISE or KUTLOG_FAST");
   }
   Check& normalization(kutlog_normalization normalization,
                        const char* name = "normalization") {
-    return in_range(int(normalization), 2, name, "KUTLOG_UNNORMALIZED or KUTLOG_EXACT_COEF");
+    return in_range(normalization, 2, name, "KUTLOG_UNNORMALIZED or KUTLOG_EXACT_COEF");
   }
   Check& options(const kutlog_shade_options& options) {
     return variant(options.variant, "options->variant")
         .normalization(options.normalization, "options->normalization")
-        .in_range(int(options.reflection), 2, "options->reflection",
+        .in_range(options.reflection, 2, "options->reflection",
                   "KUTLOG_REFLECT_BLINN or KUTLOG_REFLECT_PHONG");
   }
   // The rule of every array: count 0 takes NULL; else each array non-NULL, and count at most

@@ -195,9 +195,18 @@ TEST(CApi, InvalidParametersGiveTheCppMessage) {
     }
     return std::string("no exception");
   };
-  for (const auto [n, k, Q, parameter] :
-       {std::tuple{0.0, 3, 0.5, "n = "}, std::tuple{100.0, 0, 0.5, "k = "},
-        std::tuple{100.0, 3, 1.0, "Q = "}, std::tuple{1e300, 3, 0.5, "n is out of range"}}) {
+  struct Invalid {
+    double n;
+    int k;
+    double Q;
+    const char* parameter;
+  };
+  for (const Invalid& invalid : {Invalid{0.0, 3, 0.5, "n = "}, Invalid{100.0, 0, 0.5, "k = "},
+                                 Invalid{100.0, 3, 1.0, "Q = "},
+                                 Invalid{1e300, 3, 0.5, "n is out of range"}}) {
+    const double n = invalid.n, Q = invalid.Q;  // captured below: not structured bindings
+    const int k = invalid.k;
+    const char* const parameter = invalid.parameter;
     kutlog_error error{};
     kutlog_lobe* lobe = reinterpret_cast<kutlog_lobe*>(&error);  // overwritten with NULL
     EXPECT_EQ(kutlog_lobe_create(n, k, Q, &lobe, &error), KUTLOG_INVALID_ARGUMENT);

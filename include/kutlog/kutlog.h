@@ -57,14 +57,19 @@ typedef struct kutlog_error {
 /* The largest count an array call takes: PTRDIFF_MAX / sizeof(float). */
 #define KUTLOG_MAX_COUNT (PTRDIFF_MAX / 4)
 
-/* As kutlog::Variant, kutlog::Normalization, kutlog::Reflection and kutlog::LobeUse. */
-typedef enum kutlog_variant { KUTLOG_PRECISE = 0, KUTLOG_FAST = 1 } kutlog_variant;
-typedef enum kutlog_normalization {
+/* As kutlog::Variant, kutlog::Normalization, kutlog::Reflection and kutlog::LobeUse: ints, as a
+ * C caller may pass any, each checked (KUTLOG_INVALID_ARGUMENT outside its constants). */
+typedef int kutlog_variant;
+enum { KUTLOG_PRECISE = 0, KUTLOG_FAST = 1 };
+typedef int kutlog_normalization;
+enum {
   KUTLOG_UNNORMALIZED = 0, /* F in [0, 1] */
   KUTLOG_EXACT_COEF = 1    /* coef_exact F, the energy-conserving lobe */
-} kutlog_normalization;
-typedef enum kutlog_reflection { KUTLOG_REFLECT_BLINN = 0, KUTLOG_REFLECT_PHONG = 1 } kutlog_reflection;
-typedef enum kutlog_lobe_use { KUTLOG_USE_MICROFACET = 0, KUTLOG_USE_PHONG = 1 } kutlog_lobe_use;
+};
+typedef int kutlog_reflection;
+enum { KUTLOG_REFLECT_BLINN = 0, KUTLOG_REFLECT_PHONG = 1 };
+typedef int kutlog_lobe_use;
+enum { KUTLOG_USE_MICROFACET = 0, KUTLOG_USE_PHONG = 1 };
 
 /* Opaque handles: kutlog::Lobe, kutlog::PerLaneLobe and kutlog::LobeSampler. */
 typedef struct kutlog_lobe kutlog_lobe;
