@@ -11,7 +11,9 @@
  * where a status is returned, NaN where a value is (kutlog_eval of a fragment of a NULL lobe);
  * destroying NULL does nothing.
  * Per fragment: kutlog_lobe_fragment() gives a 32-byte plain struct, valid while its lobe lives,
- * that kutlog_eval() evaluates inline: the code of C++'s Lobe::eval(t), not a call. */
+ * that kutlog_eval() evaluates inline: the code of C++'s Lobe::eval(t), not a call, and its bits
+ * where both are compiled with the same contraction (GCC fuses a * b + c in C++ on FMA targets
+ * by default, not in ISO C: -ffp-contract=off or =fast for both). */
 #ifndef KUTLOG_KUTLOG_H
 #define KUTLOG_KUTLOG_H
 
