@@ -1,4 +1,4 @@
-/* kutlog/kutlog.h: the C API (C99, and C++ of any standard), the same kernels as the C++ API of
+/* kutlog/kutlog.h: the C API (C99, and C++11 or later), the same kernels as the C++ API of
  * kutlog/lobe.hpp, kutlog/shade.hpp, kutlog/sampling.hpp, kutlog/math.hpp and
  * kutlog/dispatch.hpp, whose doc blocks give each call's contract, bounds and data rule.
  *
@@ -8,7 +8,7 @@
  * Pointers and counts, for every array call: count 0 writes nothing and accepts NULL arrays; a
  * NULL array with count > 0, or a count above KUTLOG_MAX_COUNT (no float array is that large),
  * gives KUTLOG_INVALID_ARGUMENT and writes nothing. A NULL handle gives KUTLOG_INVALID_ARGUMENT
- * where a status is returned, NaN where a value is (kutlog_eval of a fragment of a NULL lobe);
+ * where a status is returned, NaN where a value is (and kutlog_eval of a zeroed fragment);
  * destroying NULL does nothing.
  * Per fragment: kutlog_lobe_fragment() gives a 32-byte plain struct, valid while its lobe lives,
  * that kutlog_eval() evaluates inline: the code of C++'s Lobe::eval(t), not a call, and its bits
