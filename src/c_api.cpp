@@ -14,7 +14,6 @@ using namespace kutlog::c_api;
 
 extern "C" {
 
-
 kutlog_status kutlog_lobe_eval_array(const kutlog_lobe* lobe, const float* t, float* out,
                                      std::size_t count, kutlog_variant variant,
                                      kutlog_normalization normalization, kutlog_error* error) {
