@@ -37,7 +37,7 @@ kutlog_status kutlog_per_lane_lobe_create(double n_min, double n_max, int k, dou
 void kutlog_per_lane_lobe_destroy(kutlog_per_lane_lobe* lobe) { delete lobe; }
 float kutlog_per_lane_lobe_eval(const kutlog_per_lane_lobe* lobe, float t, float n,
                                 kutlog_variant variant, kutlog_normalization normalization) {
-  if (!lobe || !valid_enum(variant) || !valid_enum(normalization)) return kNaN;
+  if (!lobe || !valid_variant(variant) || !valid_normalization(normalization)) return kNaN;
   return lobe->lobe.eval(t, n, kutlog::Variant(variant), kutlog::Normalization(normalization));
 }
 kutlog_status kutlog_per_lane_lobe_eval_array(const kutlog_per_lane_lobe* lobe, const float* t,

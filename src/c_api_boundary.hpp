@@ -61,6 +61,13 @@ kutlog_status guarded(kutlog_error* error, Body body) noexcept {
   }
 }
 
+// The C enums' counts of constants (kutlog/kutlog.h), and their checks.
+constexpr int kVariants = 3, kNormalizations = 2;
+inline bool valid_variant(kutlog_variant variant) { return variant >= 0 && variant < kVariants; }
+inline bool valid_normalization(kutlog_normalization normalization) {
+  return normalization >= 0 && normalization < kNormalizations;
+}
+
 // The checks of one call, in order, the first failure reported: Check(error).handle(...)...
 class Check {
  public:
@@ -80,11 +87,13 @@ class Check {
     return *this;
   }
   Check& variant(kutlog_variant variant, const char* name = "variant") {
-    return in_range(variant, 2, name, "KUTLOG_PRECISE or KUTLOG_FAST");
+    return in_range(variant, kVariants, name,
+                    "KUTLOG_PRECISE, KUTLOG_FAST or KUTLOG_DETERMINISTIC");
   }
   Check& normalization(kutlog_normalization normalization,
                        const char* name = "normalization") {
-    return in_range(normalization, 2, name, "KUTLOG_UNNORMALIZED or KUTLOG_EXACT_COEF");
+    return in_range(normalization, kNormalizations, name,
+                    "KUTLOG_UNNORMALIZED or KUTLOG_EXACT_COEF");
   }
   Check& options(const kutlog_shade_options& options) {
     return variant(options.variant, "options->variant")
@@ -117,11 +126,6 @@ class Check {
   kutlog_error* error_;
   kutlog_status status_ = KUTLOG_OK;
 };
-
-template <class Enum>
-bool valid_enum(Enum value) {
-  return int(value) == 0 || int(value) == 1;
-}
 
 inline kutlog::ShadeOptions options_of(const kutlog_shade_options& options) {
   return {kutlog::Variant(options.variant), kutlog::Normalization(options.normalization),

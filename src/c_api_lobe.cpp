@@ -76,7 +76,7 @@ float kutlog_fast_fragment_kernel_eval(const kutlog_fast_fragment* fragment, flo
 
 float kutlog_lobe_eval(const kutlog_lobe* lobe, float t, kutlog_variant variant,
                        kutlog_normalization normalization) {
-  if (!lobe || !valid_enum(variant) || !valid_enum(normalization)) return kNaN;
+  if (!lobe || !valid_variant(variant) || !valid_normalization(normalization)) return kNaN;
   return lobe->lobe.eval(t, kutlog::Variant(variant), kutlog::Normalization(normalization));
 }
 

@@ -26,9 +26,6 @@ const detail::KernelTable& table_of(Arch arch) {
   return kKernelTables[static_cast<std::size_t>(arch)]();
 }
 
-// Links the epicenter check, whose presence makes src/lobe.cpp fit a Lobe's SIMD kernels.
-[[gnu::used]] constexpr auto* kEpicenterCheckAnchor = &detail::measured_epicenter_ulp;
-
 }  // namespace
 
 std::atomic<const detail::LobeArrayKernels*> Lobe::active_loops_{nullptr};
@@ -63,13 +60,13 @@ const detail::KernelTable& detail::best_kernel_table() {
   return table_of(active_arch());  // throws: this CPU runs no compiled arch
 }
 
-const detail::LobeArrayKernels* detail::lobe_array_kernels_for(detail::Arithmetic arithmetic) {
-  if (arithmetic == detail::Arithmetic::scalar) return nullptr;
+// Its presence makes src/lobe.cpp fit a Lobe's fused kernels (a weak reference there).
+std::optional<detail::EpicenterLoops> detail::fused_epicenter_loops(const LobeKernel& kernel) {
   for (Arch arch : kCompiledArchs)
-    if (arch_supported(arch) &&
-        table_of(arch).fused_fma == (arithmetic == detail::Arithmetic::fused))
-      return &table_of(arch);
-  return nullptr;
+    if (arch_supported(arch) && table_of(arch).fused_fma)
+      return EpicenterLoops{table_of(arch).of(kernel, false),
+                            best_kernel_table().epicenter_worst_ulp};
+  return std::nullopt;
 }
 
 }  // namespace kutlog

@@ -9,6 +9,12 @@
 #include "arch/kernel_table.hpp"
 
 namespace kutlog::detail {
+
+#if defined(__ELF__)
+// Weak: the array path links it (src/dispatch.cpp); without it no fused kernel is fitted.
+[[gnu::weak]] decltype(fused_epicenter_loops) fused_epicenter_loops;
+#endif
+
 namespace {
 
 // Floats a chunk: t and the kernel's outputs, 32 KiB.
@@ -20,8 +26,13 @@ std::optional<double> measured_epicenter_ulp(const detail::LobeKernel& kernel,
                                              detail::Arithmetic arithmetic,
                                              const QuotientFit& reference, double scale,
                                              double w_epicenter, double limit) {
-  const LobeArrayKernels* kernels = lobe_array_kernels_for(arithmetic);
-  if (!kernels || kernel.form != detail::LobeKernel::Form::polynomial) return std::nullopt;
+  if (kernel.form != detail::LobeKernel::Form::polynomial) return std::nullopt;
+  const std::optional<EpicenterLoops> loops =
+      arithmetic == Arithmetic::unfused ? unfused_epicenter_loops()
+      : arithmetic == Arithmetic::fused && &fused_epicenter_loops
+          ? fused_epicenter_loops(kernel)
+          : std::nullopt;
+  if (!loops) return std::nullopt;
   // Every float t of [1 - w_epicenter, 1], 1 first (t above 1 gives t = 1's output).
   const float t_lowest = float(1 - w_epicenter);
   const long count = long(std::bit_cast<std::uint32_t>(1.0f)) -
@@ -48,7 +59,6 @@ std::optional<double> measured_epicenter_ulp(const detail::LobeKernel& kernel,
 
   // In chunks that stay in L1, the reference on the best arch's double lanes; every 16th
   // float first.
-  const auto sweep = best_kernel_table().epicenter_worst_ulp;
   std::vector<float> t(std::size_t(std::min<long>(count, kChunk))), out(t.size());
   double worst = 0;
   for (const long stride : {16L, 1L}) {
@@ -58,8 +68,8 @@ std::optional<double> measured_epicenter_ulp(const detail::LobeKernel& kernel,
       const std::uint32_t first_bits = std::bit_cast<std::uint32_t>(1.0f) - std::uint32_t(first);
       for (std::size_t i = 0; i < size; ++i)
         t[i] = std::bit_cast<float>(first_bits - std::uint32_t(stride * long(i)));
-      kernels->of(kernel)(kernel, t.data(), out.data(), size);
-      worst = std::max(worst, sweep(exact, t.data(), out.data(), size));
+      loops->lobe(kernel, t.data(), out.data(), size);
+      worst = std::max(worst, loops->worst_ulp(exact, t.data(), out.data(), size));
       if (worst > limit) return worst;
     }
   }

@@ -4,15 +4,17 @@
 // epicenter and compare each output with a reference whose own error is bounded.
 //
 // The kernel is run where it will run: an FMA kernel on this CPU's best FMA arch, an unfused
-// one on its best arch without (SSE4.1, or the portable arch). Each computes the bits every
-// arch of its kind computes: fused multiply-adds, or products and sums rounded one at a time,
-// in the same order, subtractions and clamps; kutlog compiles its kernels with
+// one by the deterministic mode's loops (Variant::deterministic), which compute the same bits on
+// every arch, so that its acceptance is the same on every CPU: here the portable arch's
+// (src/deterministic.cpp), linked with every Lobe. kutlog compiles its kernels with
 // -ffp-contract=off. (A caller who inlines kutlog/simd/lobe.hpp and lets the compiler fuse an
 // unfused kernel's products runs other bits: kutlog/inspect.hpp, KernelCertificate.)
 #pragma once
 
+#include <cstddef>
 #include <optional>
 
+#include "arch/kernel_table.hpp"
 #include "kutlog/lobe.hpp"
 #include "lobe_bound.hpp"
 
@@ -39,12 +41,20 @@ std::optional<double> measured_epicenter_ulp(const detail::LobeKernel& kernel,
                                              const QuotientFit& reference, double scale,
                                              double w_epicenter, double limit);
 
-// The kernels of this CPU's best arch with (fused) or without (unfused) FMA
-// (src/dispatch.cpp), or nullptr if it has none; nullptr for the scalar path.
-struct LobeArrayKernels;
-const LobeArrayKernels* lobe_array_kernels_for(detail::Arithmetic arithmetic);
-// The kernels of this CPU's best arch, whatever KUTLOG_ARCH or force_arch choose: the sweep's
-// reference runs there.
+// What runs a check: the kernel's array loop, and the sweep of its outputs against the
+// reference (in double lanes).
+struct EpicenterLoops {
+  LobeArrayKernel lobe;
+  double (*worst_ulp)(const EpicenterReference&, const float* t, const float* out,
+                      std::size_t count);
+};
+// Any unfused kernel's: the portable arch's deterministic loop and an unfused sweep
+// (src/deterministic.cpp).
+EpicenterLoops unfused_epicenter_loops();
+// A fused kernel's: the best FMA arch's loop and the best arch's sweep, or nullopt if this CPU
+// has no FMA arch (src/dispatch.cpp, linked with the array path).
+std::optional<EpicenterLoops> fused_epicenter_loops(const LobeKernel& kernel);
+// The kernels of this CPU's best arch, whatever KUTLOG_ARCH or force_arch choose.
 struct KernelTable;
 const KernelTable& best_kernel_table();
 

@@ -37,12 +37,13 @@ void Lobe::eval_out_of_line(const float* t, float* out, std::size_t count, Varia
   const detail::KernelTable& table = active_table();
   const detail::LobeKernel& chosen =
       inspect::kernel(*this, variant, normalization, table.fused_fma);
-  table.of(chosen)(chosen, t, out, count);
+  table.of(chosen, variant == Variant::deterministic)(chosen, t, out, count);
 }
 void PerLaneLobe::eval(const float* t, const float* n, float* out, std::size_t count,
                        Variant variant, Normalization normalization) const noexcept {
-  active_table().per_lane_lobe(kernels_[int(variant)], normalization == Normalization::exact_coef,
-                               t, n, out, count);
+  active_table().per_lane_lobe(inspect::kernel(*this, variant),
+                               normalization == Normalization::exact_coef,
+                               variant == Variant::deterministic, t, n, out, count);
 }
 void PowerPoly::eval(const float* t, float* out, std::size_t count) const noexcept {
   active_table().power_poly(kernel_, t, out, count);

@@ -31,10 +31,11 @@ namespace kutlog {
 using detail::Real;
 
 #if defined(__ELF__)
-// Weak: the array path links it (src/dispatch.cpp), and only then are a Lobe's SIMD kernels
-// fitted (docs/design.md, "Footprint"). Elsewhere than ELF every Lobe fits them.
+// Weak: the array path links it (src/dispatch.cpp), and only then are a Lobe's fused kernels
+// fitted (docs/design.md, "Footprint"); the unfused ones, which the deterministic mode runs
+// everywhere, always are. Elsewhere than ELF every Lobe fits all.
 namespace detail {
-[[gnu::weak]] decltype(measured_epicenter_ulp) measured_epicenter_ulp;
+[[gnu::weak]] decltype(fused_epicenter_loops) fused_epicenter_loops;
 }  // namespace detail
 #endif
 
@@ -366,13 +367,13 @@ CertifiedKernel fit_kernel(const ref::KutlogLobe& reference, float t_cut,
                            std::to_string(reference.Q()) + ") meets the bound of its variant");
 }
 
-// The arithmetics whose kernels a Lobe fits: the SIMD ones only where the program links the
+// The arithmetics whose kernels a Lobe fits: the fused ones only where the program links the
 // array path, which alone runs them.
 std::span<const detail::Arithmetic> fitted_arithmetics() {
   static constexpr detail::Arithmetic kAll[] = {
-      detail::Arithmetic::unfused, detail::Arithmetic::fused, detail::Arithmetic::scalar};
+      detail::Arithmetic::fused, detail::Arithmetic::unfused, detail::Arithmetic::scalar};
 #if defined(__ELF__)
-  if (&detail::measured_epicenter_ulp == nullptr) return std::span(kAll).last(1);
+  if (&detail::fused_epicenter_loops == nullptr) return std::span(kAll).last(2);
 #endif
   return kAll;
 }

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "arch/lobe_loops.hpp"
 #include "kutlog/lobe.hpp"
 #include "kutlog/reference.hpp"
 #include "cpu_features.hpp"
@@ -229,6 +230,17 @@ PerLaneLobe::PerLaneLobe(double n_min, double n_max, int k, double Q) : k_(k), Q
                                 " is invalid; the lanes' n are floats, n_max must be <= FLT_MAX");
   for (Variant variant : {Variant::precise, Variant::fast})
     kernels_[int(variant)] = fit_kernel(n_min, n_max, k, Q, variant);
+}
+
+// The deterministic mode's one fragment: the arrays' loop on the portable arch, as Lobe's
+// (src/deterministic.cpp).
+float PerLaneLobe::eval_deterministic(float t, float n,
+                                      Normalization normalization) const noexcept {
+  float out;
+  detail::per_lane_deterministic<simd::portable>(kernels_[int(Variant::precise)],
+                                                 normalization == Normalization::exact_coef, &t,
+                                                 &n, &out, 1);
+  return out;
 }
 
 }  // namespace kutlog

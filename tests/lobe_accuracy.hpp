@@ -72,26 +72,28 @@ inline inspect::Arithmetic arithmetic_of(tools::LobeEvaluator evaluate) {
 
 // Asserts kutlog/accuracy.hpp's bounds of the value returned and the hard contracts
 // 0 <= out <= peak (1, or the float coef: the output at t = 1) and out = 0 exactly where F = 0
-// (at and below the cut-off) for the four kernels of a lobe, run by `evaluate`; and that
+// (at and below the cut-off) for the kernels of a lobe (tools::kLobeVariants), run by
+// `evaluate`; and that
 // each kernel's errors are within what its setup certified (Lobe::certificate: the setup
 // keeps kernels by that bound alone, so an unsound one would pass a fit that misses). Adds its
 // errors to `largest`.
-inline void expect_within_bounds(const Lobe& lobe, const std::array<tools::LobeErrors, 4>& errors,
+inline void expect_within_bounds(const Lobe& lobe, const tools::LobeKernelErrors& errors,
                                  LargestErrors* largest = nullptr,
                                  tools::LobeEvaluator evaluate = tools::evaluate_array) {
   const inspect::Arithmetic arithmetic = arithmetic_of(evaluate);
-  const char* names[] = {"precise", "precise*coef", "fast", "fast*coef"};
-  for (int i = 0; i < 4; ++i) {
-    const LobeBound& bound = kLobeBounds[i < 2 ? 0 : 1];
+  for (std::size_t i = 0; i < errors.size(); ++i) {
+    const Variant variant = tools::kLobeVariants[i / 2];
+    const LobeBound& bound = tools::lobe_bound_of(variant);
     const bool normalized = i % 2 == 1;
-    SCOPED_TRACE(std::string(names[i]) + " n=" + std::to_string(lobe.n()) + " k=" +
-                 std::to_string(lobe.k()) + " Q=" + std::to_string(lobe.Q()));
+    SCOPED_TRACE(std::string(variant_name(variant)) + (normalized ? "*coef" : "") + " n=" +
+                 std::to_string(lobe.n()) + " k=" + std::to_string(lobe.k()) + " Q=" +
+                 std::to_string(lobe.Q()));
     const float peak = normalized ? float(lobe.coef_exact()) : 1.0f;
     EXPECT_LE(errors[i].max_abs_error, bound.max_abs_error())
         << "worst t = " << errors[i].worst_abs_input;
     // Certified (the double reference's own error, about 1e-16, allowed for).
-    const inspect::KernelCertificate& certified = inspect::certificate(
-        lobe, tools::kLobeVariants[i / 2], tools::kLobeNormalizations[i % 2], arithmetic);
+    const inspect::KernelCertificate& certified =
+        inspect::certificate(lobe, variant, tools::kLobeNormalizations[i % 2], arithmetic);
     // Kept only within the promise: a bound that missed it, even by little, never is.
     EXPECT_LE(certified.abs_error, bound.promised_abs_error) << "arithmetic " << int(arithmetic);
     EXPECT_LE(errors[i].max_abs_error, certified.abs_error * (1 + 1e-9))
@@ -103,7 +105,7 @@ inline void expect_within_bounds(const Lobe& lobe, const std::array<tools::LobeE
     if (largest) {
       const double share = errors[i].max_abs_error / certified.abs_error;
       largest->certificate_share = std::max(largest->certificate_share, share);
-      const std::size_t which = i < 2 ? 0 : 1;
+      const std::size_t which = std::size_t(&bound - kLobeBounds);
       largest->abs_error[which] = std::max(largest->abs_error[which], errors[i].max_abs_error);
       largest->epicenter_ulp[which] =
           std::max(largest->epicenter_ulp[which], errors[i].max_epicenter_ulp);

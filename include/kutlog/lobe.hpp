@@ -18,7 +18,11 @@ KUTLOG_API_BEGIN
 namespace kutlog {
 
 // precise: within 2^-22 of the peak, 2 ulps where F >= 0.6. fast: within 2^-16 of the peak.
-enum class Variant : std::uint8_t { precise, fast };
+// deterministic: precise's bounds, and the same bits on every arch (avx512, avx2, sse4.1, neon64,
+// portable) and every call shape (one fragment, arrays, shade), whatever the caller's flags:
+// the kernel fitted for unfused arithmetic, run unfused everywhere (docs/accuracy.md, "The
+// deterministic mode"). Its one-fragment eval is out of line.
+enum class Variant : std::uint8_t { precise, fast, deterministic };
 // none: F in [0, 1]. exact_coef: coef_exact() F, the energy-conserving lobe.
 enum class Normalization : std::uint8_t { none, exact_coef };
 
@@ -66,6 +70,7 @@ class Lobe {
   [[gnu::always_inline]] float eval(float t, Variant variant = Variant::precise,
                                     Normalization normalization = Normalization::none) const
       noexcept {
+    if (variant == Variant::deterministic) return eval_deterministic(t, normalization);
     if (variant == Variant::fast) {
       const detail::FastScalarPieces& pieces = fast_pieces_[int(normalization)];
       if (!pieces.table.empty()) [[likely]] return pieces.evaluate(t);
@@ -94,16 +99,22 @@ class Lobe {
     const int index =
         kernel_index(variant, normalization,
                      loops->fused_fma ? detail::Arithmetic::fused : detail::Arithmetic::unfused);
-    loops->by_slot[array_slots_[index]](kernels_[index], t, out, count);
+    (variant == Variant::deterministic ? loops->deterministic_by_slot
+                                       : loops->by_slot)[array_slots_[index]](kernels_[index], t,
+                                                                              out, count);
   }
 
  private:
   friend struct detail::Inspector;
   float eval_by_kernel(float t, Variant variant, Normalization normalization) const noexcept;
+  float eval_deterministic(float t, Normalization normalization) const noexcept;
   [[gnu::cold]] void eval_out_of_line(const float* t, float* out, std::size_t count,
                                       Variant variant, Normalization normalization) const noexcept;
+  // Deterministic runs precise's kernel for unfused arithmetic, on every arch and in eval(t).
   static constexpr int kernel_index(Variant variant, Normalization normalization,
                                     detail::Arithmetic arithmetic) {
+    if (variant == Variant::deterministic)
+      variant = Variant::precise, arithmetic = detail::Arithmetic::unfused;
     return (int(variant) * 2 + int(normalization)) * 3 + int(arithmetic);
   }
 
@@ -152,6 +163,7 @@ class PerLaneLobe {
   // once; near powf's speed at that n (docs/benchmarks.md).
   float eval(float t, float n, Variant variant = Variant::precise,
              Normalization normalization = Normalization::none) const noexcept {
+    if (variant == Variant::deterministic) return eval_deterministic(t, n, normalization);
     return kernels_[int(variant)].evaluate(t, n, normalization == Normalization::exact_coef);
   }
   // Floats only, as Lobe's scalar eval.
@@ -167,9 +179,10 @@ class PerLaneLobe {
 
  private:
   friend struct detail::Inspector;
+  float eval_deterministic(float t, float n, Normalization normalization) const noexcept;
   int k_;
   double Q_;
-  detail::PerLaneKernel kernels_[2];  // by Variant
+  detail::PerLaneKernel kernels_[2];  // by Variant, precise's for deterministic
 };
 
 }  // namespace kutlog

@@ -38,8 +38,9 @@ void per_lane_instance(const PerLaneKernel& kernel, bool normalized, const float
   run(PreparedPerLaneLobe<Arch, kPrecise, Power::in_double, kInN, kWClamped>(kernel, normalized));
 }
 template <class Arch>
-void per_lane_array(const PerLaneKernel& kernel, bool normalized, const float* t, const float* n,
-                    float* out, std::size_t count) {
+void per_lane_array(const PerLaneKernel& kernel, bool normalized, bool deterministic,
+                    const float* t, const float* n, float* out, std::size_t count) {
+  if (deterministic) return per_lane_deterministic<Arch>(kernel, normalized, t, n, out, count);
   const auto instance = [&]<bool kInN, bool kWClamped>() {
     per_lane_instance<Arch, kInN, kWClamped>(kernel, normalized, t, n, out, count);
   };

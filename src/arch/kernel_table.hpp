@@ -32,8 +32,8 @@ struct EpicenterReference {
 // active_table().entry all come from here (docs/design.md, "Dispatch").
 #define KUTLOG_ARRAY_ENTRIES(X)                                                                   \
   X(per_lane_lobe, per_lane_array,                                                               \
-    void(const PerLaneKernel&, bool normalized, const float* t, const float* n, float* out,      \
-         std::size_t count))                                                                     \
+    void(const PerLaneKernel&, bool normalized, bool deterministic, const float* t,             \
+         const float* n, float* out, std::size_t count))                                         \
   X(blinn_phong_xsimd, blinn_phong_xsimd_array,                                                  \
     void(const float* t, float n, float scale, float* out, std::size_t count))                  \
   X(blinn_phong_u10, blinn_phong_u10_array,                                                      \

@@ -1,5 +1,5 @@
 // The lobe and PowerPoly array loops, one per degree and finish, and the table of them a Lobe
-// picks its loop from.
+// picks its loop from; PerLaneLobe's deterministic loop.
 #pragma once
 
 #include <array>
@@ -79,48 +79,76 @@ void schlick_array(const float* t, float n, float* out, std::size_t count) {
 // coefficients in registers) and its finish fixed, the base_power form generic. The table holds
 // one per degree and finish, so that a call picks its loop by the slot its Lobe computed at
 // setup, with no further dispatch.
-template <class Arch, int kDegree, simd::LobeFinish kFinish, bool kClamped>
+template <class Arch, int kDegree, simd::LobeFinish kFinish, bool kClamped, bool kDeterministic>
 [[gnu::noinline]] void kutlog_lobe_loop(const LobeKernel& kernel, const float* t, float* out,
                                         std::size_t count) {
-  map_arrays<Arch, 1>(simd::PreparedLobe<Arch, kDegree, kFinish, kClamped>(kernel), {t}, out,
-                      count, 1.0f);
+  map_arrays<Arch, 1>(
+      simd::PreparedLobe<Arch, kDegree, kFinish, kClamped, kDeterministic>(kernel), {t}, out,
+      count, 1.0f);
 }
 // A span of at most one batch (a renderer's span of 16 on AVX-512) runs straight through, no
 // loop; longer spans jump to the loop. A whole batch is loaded and stored whole, never through
 // the lane mask: Zen 4 forwards no masked store to a later load, nor a store to a masked load,
 // and a caller who reads back the span it just shaded, as shade() does, would wait for it.
 template <class Arch, int kDegree, simd::LobeFinish kFinish = simd::LobeFinish::any,
-          bool kClamped = true>
+          bool kClamped = true, bool kDeterministic = false>
 void kutlog_lobe_array(const LobeKernel& kernel, const float* t, float* out, std::size_t count) {
   using F = floats_of<Arch>;
   if (count > F::size)
-    return kutlog_lobe_loop<Arch, kDegree, kFinish, kClamped>(kernel, t, out, count);
-  const simd::PreparedLobe<Arch, kDegree, kFinish, kClamped> lobe(kernel);
+    return kutlog_lobe_loop<Arch, kDegree, kFinish, kClamped, kDeterministic>(kernel, t, out,
+                                                                               count);
+  const simd::PreparedLobe<Arch, kDegree, kFinish, kClamped, kDeterministic> lobe(kernel);
   if (count == F::size) return lobe(F::load_unaligned(t)).store_unaligned(out);
   if (count == 0) return;  // SSE4.1's partial load reads t[0]
   store_partial<Arch>(out, lobe(load_partial<Arch>(t, count, 1.0f)), count);
 }
-template <class Arch>
-constexpr LobeArrayKernels lobe_array_kernels() {
+// The slots of one table: by_slot (kDeterministic false) or deterministic_by_slot.
+template <class Arch, bool kDeterministic>
+constexpr void fill_lobe_slots(LobeArrayKernel (&slots)[LobeArrayKernels::kSlots]) {
   using simd::LobeFinish;
-  // An FMA-less arch runs a compensated kernel (never given it: see LobeArrayKernels) as split.
-  constexpr LobeFinish kCompensated =
-      simd::has_fused_fma<Arch> ? LobeFinish::compensated : LobeFinish::split;
-  LobeArrayKernels kernels{};
-  kernels.fused_fma = simd::has_fused_fma<Arch>;
+  // An FMA-less arch, or the deterministic mode, runs a compensated kernel (never given it: see
+  // LobeArrayKernels) as split.
+  constexpr LobeFinish kCompensated = simd::has_fused_fma<Arch> && !kDeterministic
+                                          ? LobeFinish::compensated
+                                          : LobeFinish::split;
+  constexpr bool kD = kDeterministic;
   [&]<int... degree>(std::integer_sequence<int, degree...>) {
     constexpr int kPer = LobeArrayKernels::kSlotsPerDegree;
-    ((kernels.by_slot[kPer * degree] = &kutlog_lobe_array<Arch, degree, LobeFinish::plain>,
-      kernels.by_slot[kPer * degree + 1] = &kutlog_lobe_array<Arch, degree, LobeFinish::split>,
-      kernels.by_slot[kPer * degree + 2] = &kutlog_lobe_array<Arch, degree, kCompensated>,
-      kernels.by_slot[kPer * degree + 3] =
-          &kutlog_lobe_array<Arch, degree, LobeFinish::plain, false>,
-      kernels.by_slot[kPer * degree + 4] =
-          &kutlog_lobe_array<Arch, degree, LobeFinish::split, false>),
+    ((slots[kPer * degree] = &kutlog_lobe_array<Arch, degree, LobeFinish::plain, true, kD>,
+      slots[kPer * degree + 1] = &kutlog_lobe_array<Arch, degree, LobeFinish::split, true, kD>,
+      slots[kPer * degree + 2] = &kutlog_lobe_array<Arch, degree, kCompensated, true, kD>,
+      slots[kPer * degree + 3] = &kutlog_lobe_array<Arch, degree, LobeFinish::plain, false, kD>,
+      slots[kPer * degree + 4] = &kutlog_lobe_array<Arch, degree, LobeFinish::split, false, kD>),
      ...);
   }(std::make_integer_sequence<int, LobeArrayKernels::kMaxArrayUnrolledDegree + 1>());
-  kernels.by_slot[LobeArrayKernels::kSlots - 1] = &kutlog_lobe_array<Arch, -1>;
+  slots[LobeArrayKernels::kSlots - 1] = &kutlog_lobe_array<Arch, -1, LobeFinish::any, true, kD>;
+}
+template <class Arch>
+constexpr LobeArrayKernels lobe_array_kernels() {
+  LobeArrayKernels kernels{};
+  kernels.fused_fma = simd::has_fused_fma<Arch>;
+  fill_lobe_slots<Arch, false>(kernels.by_slot);
+  // An FMA-less arch's loops are deterministic already (no estimate in PreparedLobe): the same.
+  fill_lobe_slots<Arch, simd::has_fused_fma<Arch>>(kernels.deterministic_by_slot);
   return kernels;
+}
+
+// PerLaneLobe's loop in the deterministic mode, on the precise kernel: unfused, 1/n divided,
+// and the compensated power (exact only when fused) in double, as FMA-less archs run it.
+template <class Arch>
+void per_lane_deterministic(const PerLaneKernel& kernel, bool normalized, const float* t,
+                            const float* n, float* out, std::size_t count) {
+  using Power = PerLaneKernel::Power;
+  const auto run = [&]<Power kPower, bool kWClamped>() {
+    map_arrays<Arch, 2>(simd::PreparedPerLaneLobe<Arch, Variant::precise, kPower, false,
+                                                  kWClamped, true>(kernel, normalized),
+                        {t, n}, out, count, 1.0f);
+  };
+  if (kernel.power == Power::in_float)
+    return kernel.w_clamped ? run.template operator()<Power::in_float, true>()
+                            : run.template operator()<Power::in_float, false>();
+  kernel.w_clamped ? run.template operator()<Power::in_double, true>()
+                   : run.template operator()<Power::in_double, false>();
 }
 
 }  // namespace kutlog::detail

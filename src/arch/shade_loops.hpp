@@ -32,7 +32,8 @@ void shade_in_chunks(const LobeKernel& kernel, const ShadeOptions& options,
                      const std::uint8_t* mask) {
   using F = floats_of<Arch>;
   static constexpr LobeArrayKernels kLobeLoops = lobe_array_kernels<Arch>();
-  const LobeArrayKernel lobe_loop = kLobeLoops.of(kernel);
+  const LobeArrayKernel lobe_loop =
+      kLobeLoops.of(kernel, options.variant == Variant::deterministic);
   alignas(64) float t_buffer[kShadeChunk], n_dot_l_buffer[kShadeChunk], lobe[kShadeChunk];
   for (std::size_t begin = 0; begin < count; begin += kShadeChunk) {
     const std::size_t size = count - begin < kShadeChunk ? count - begin : kShadeChunk;
@@ -47,31 +48,36 @@ void shade_in_chunks(const LobeKernel& kernel, const ShadeOptions& options,
   }
 }
 
-// The cosine the lobe takes, by options.reflection: N.H (Blinn) or R.V (Phong).
-template <class Arch>
+// The cosine the lobe takes, by options.reflection: N.H (Blinn) or R.V (Phong). kMayFuse
+// false in the deterministic mode, as every dot product of this file.
+template <bool kMayFuse, class Arch>
 inline floats_of<Arch> lobe_cosine(const ShadeOptions& options, const simd::Vector3<Arch>& n,
                                    const simd::Vector3<Arch>& l, const simd::Vector3<Arch>& v) {
-  return options.reflection == Reflection::blinn ? simd::blinn_cosine(n, l, v)
-                                                 : simd::phong_cosine(n, l, v, simd::dot(n, l));
+  return options.reflection == Reflection::blinn
+             ? simd::blinn_cosine<kMayFuse>(n, l, v)
+             : simd::phong_cosine<kMayFuse>(n, l, v, simd::dot<kMayFuse>(n, l));
 }
 
-template <class Arch>
-void shade_vectors_array(const LobeKernel& kernel, const ShadeOptions& options, Vectors normal,
-                         Vectors to_light, Vectors to_viewer, float* out, std::size_t count,
-                         const std::uint8_t* mask) {
+// Each form below runs its cosines fused where the arch has FMA, or unfused in the
+// deterministic mode: one instance of each (shade_forms).
+template <class Arch, bool kMayFuse>
+void shade_vectors_as(const LobeKernel& kernel, const ShadeOptions& options, Vectors normal,
+                      Vectors to_light, Vectors to_viewer, float* out, std::size_t count,
+                      const std::uint8_t* mask) {
   using F = floats_of<Arch>;
   const auto cosines = [&](std::size_t begin, std::size_t size, float* t, float* n_dot_l) {
     const float *nx = normal.x + begin, *ny = normal.y + begin, *nz = normal.z + begin,
                 *lx = to_light.x + begin, *ly = to_light.y + begin, *lz = to_light.z + begin;
     map_arrays<Arch, 9>(
         [&](F n_x, F n_y, F n_z, F l_x, F l_y, F l_z, F v_x, F v_y, F v_z) {
-          return lobe_cosine<Arch>(options, {n_x, n_y, n_z}, {l_x, l_y, l_z}, {v_x, v_y, v_z});
+          return lobe_cosine<kMayFuse, Arch>(options, {n_x, n_y, n_z}, {l_x, l_y, l_z},
+                                             {v_x, v_y, v_z});
         },
         {nx, ny, nz, lx, ly, lz, to_viewer.x + begin, to_viewer.y + begin, to_viewer.z + begin},
         t, size);
     if (options.times_n_dot_l)
       map_arrays<Arch, 6>([](F n_x, F n_y, F n_z, F l_x, F l_y, F l_z) {
-        return simd::dot<Arch>({n_x, n_y, n_z}, {l_x, l_y, l_z});
+        return simd::dot<kMayFuse, Arch>({n_x, n_y, n_z}, {l_x, l_y, l_z});
       }, {nx, ny, nz, lx, ly, lz}, n_dot_l, size);
     return ChunkCosines{t, n_dot_l};
   };
@@ -95,10 +101,10 @@ Direction half_vector(Direction to_light, Direction to_viewer) {
 // One light and one viewer for every lane: Blinn's H is formed once per call, so that a lane
 // computes N.H alone (blinn_cosine per lane took a square root and a division per batch), and
 // closer to the exact cosine: 4 units of float rounding against 8.5 (tests/cosine_error.hpp).
-template <class Arch>
-void shade_directions_array(const LobeKernel& kernel, const ShadeOptions& options, Vectors normal,
-                            Direction to_light, Direction to_viewer, float* out,
-                            std::size_t count, const std::uint8_t* mask) {
+template <class Arch, bool kMayFuse>
+void shade_directions_as(const LobeKernel& kernel, const ShadeOptions& options, Vectors normal,
+                         Direction to_light, Direction to_viewer, float* out, std::size_t count,
+                         const std::uint8_t* mask) {
   using F = floats_of<Arch>;
   const simd::Vector3<Arch> l{F(to_light.x), F(to_light.y), F(to_light.z)},
       v{F(to_viewer.x), F(to_viewer.y), F(to_viewer.z)};
@@ -108,15 +114,19 @@ void shade_directions_array(const LobeKernel& kernel, const ShadeOptions& option
   const auto cosines = [&](std::size_t begin, std::size_t size, float* t, float* n_dot_l) {
     const float* const n[3] = {normal.x + begin, normal.y + begin, normal.z + begin};
     if (blinn)
-      map_arrays<Arch, 3>([&](F n_x, F n_y, F n_z) { return simd::dot<Arch>({n_x, n_y, n_z}, h); },
-                          n, t, size);
+      map_arrays<Arch, 3>(
+          [&](F n_x, F n_y, F n_z) { return simd::dot<kMayFuse, Arch>({n_x, n_y, n_z}, h); }, n,
+          t, size);
     else
       map_arrays<Arch, 3>(
-          [&](F n_x, F n_y, F n_z) { return lobe_cosine<Arch>(options, {n_x, n_y, n_z}, l, v); },
+          [&](F n_x, F n_y, F n_z) {
+            return lobe_cosine<kMayFuse, Arch>(options, {n_x, n_y, n_z}, l, v);
+          },
           n, t, size);
     if (options.times_n_dot_l)
-      map_arrays<Arch, 3>([&](F n_x, F n_y, F n_z) { return simd::dot<Arch>({n_x, n_y, n_z}, l); },
-                          n, n_dot_l, size);
+      map_arrays<Arch, 3>(
+          [&](F n_x, F n_y, F n_z) { return simd::dot<kMayFuse, Arch>({n_x, n_y, n_z}, l); }, n,
+          n_dot_l, size);
     return ChunkCosines{t, n_dot_l};
   };
   shade_in_chunks<Arch>(kernel, options, cosines, out, count, mask);
@@ -130,6 +140,29 @@ void shade_cosines_array(const LobeKernel& kernel, const ShadeOptions& options, 
     return ChunkCosines{t + begin, options.times_n_dot_l ? n_dot_l + begin : nullptr};
   };
   shade_in_chunks<Arch>(kernel, options, given, out, count, mask);
+}
+
+// The entries of the kernel table: the cosines unfused in the deterministic mode (on FMA-less
+// archs, the one instance).
+template <class Arch>
+void shade_vectors_array(const LobeKernel& kernel, const ShadeOptions& options, Vectors normal,
+                         Vectors to_light, Vectors to_viewer, float* out, std::size_t count,
+                         const std::uint8_t* mask) {
+  if constexpr (simd::has_fused_fma<Arch>)
+    if (options.variant == Variant::deterministic)
+      return shade_vectors_as<Arch, false>(kernel, options, normal, to_light, to_viewer, out,
+                                           count, mask);
+  shade_vectors_as<Arch, true>(kernel, options, normal, to_light, to_viewer, out, count, mask);
+}
+template <class Arch>
+void shade_directions_array(const LobeKernel& kernel, const ShadeOptions& options, Vectors normal,
+                            Direction to_light, Direction to_viewer, float* out,
+                            std::size_t count, const std::uint8_t* mask) {
+  if constexpr (simd::has_fused_fma<Arch>)
+    if (options.variant == Variant::deterministic)
+      return shade_directions_as<Arch, false>(kernel, options, normal, to_light, to_viewer,
+                                              out, count, mask);
+  shade_directions_as<Arch, true>(kernel, options, normal, to_light, to_viewer, out, count, mask);
 }
 
 }  // namespace kutlog::detail

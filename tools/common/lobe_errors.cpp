@@ -54,7 +54,7 @@ void evaluate_array(const Lobe& lobe, Variant variant, Normalization normalizati
   lobe.eval(t, out, count, variant, normalization);
 }
 
-std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep, LobeEvaluator evaluate,
+LobeKernelErrors measure_lobe(const Lobe& lobe, LobeSweep sweep, LobeEvaluator evaluate,
                                        unsigned threads) {
   const ref::KutlogLobe reference(lobe.n(), lobe.k(), lobe.Q());
   // The reference is 0 at and below the cut: t <= max(cos(gran), 0).
@@ -110,7 +110,7 @@ std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep, LobeEv
                        std::uint32_t(std::min<std::uint64_t>(segment.last, key + (kSamples - 1) * segment.step)),
                        segment.step});
 
-  std::array<LobeErrors, 4> total{};
+  LobeKernelErrors total{};
   std::mutex total_mutex;
   parallel_for(tasks.size(), threads, [&](std::uint64_t index, unsigned) {
     const Segment& task = tasks[index];
@@ -123,7 +123,7 @@ std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep, LobeEv
     for (std::size_t i = 0; i < t.size(); ++i)
       expected[i] = double(t[i]) <= cut ? 0.0 : reference.eval(t[i]);
     out.resize(t.size());
-    std::array<LobeErrors, 4> local{};
+    LobeKernelErrors local{};
     int kernel_index = 0;
     for (Variant variant : kLobeVariants)
       for (Normalization normalization : kLobeNormalizations) {

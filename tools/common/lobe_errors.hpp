@@ -46,10 +46,20 @@ inline double lobe_abs_error(float out, double scale, double expected) {
   return std::fabs(double(out) - scale * expected) / scale;
 }
 
-// The kernels in the order variant x normalization: precise, precise * coef, fast, fast * coef.
-inline constexpr Variant kLobeVariants[] = {Variant::precise, Variant::fast};
+// The kernels in the order variant x normalization: precise, precise * coef, fast, fast * coef,
+// deterministic, deterministic * coef.
+inline constexpr Variant kLobeVariants[] = {Variant::precise, Variant::fast,
+                                            Variant::deterministic};
 inline constexpr Normalization kLobeNormalizations[] = {Normalization::none,
                                                         Normalization::exact_coef};
+// The variants with kernels of their own: deterministic runs precise's unfused ones.
+inline constexpr Variant kFittedVariants[] = {Variant::precise, Variant::fast};
+inline constexpr std::size_t kLobeKernels = std::size(kLobeVariants) * std::size(kLobeNormalizations);
+using LobeKernelErrors = std::array<LobeErrors, kLobeKernels>;
+// The bound of kutlog/accuracy.hpp a variant promises: deterministic promises precise's.
+inline const LobeBound& lobe_bound_of(Variant variant) {
+  return kLobeBounds[variant == Variant::fast ? 1 : 0];
+}
 
 // Which floats t a sweep takes: every `support_stride`-th float of the support (t above the
 // cut) outside the epicenter, every `epicenter_stride`-th inside it (F >= 0.6); 1: every float.
@@ -72,8 +82,8 @@ void evaluate_array(const Lobe& lobe, Variant variant, Normalization normalizati
                     const float* t, float* out, std::size_t count);
 
 // The floats of the sweep through `evaluate`, against the reference (computed once, for the
-// four kernels).
-std::array<LobeErrors, 4> measure_lobe(const Lobe& lobe, LobeSweep sweep = {},
+// kernels of kLobeVariants).
+LobeKernelErrors measure_lobe(const Lobe& lobe, LobeSweep sweep = {},
                                        LobeEvaluator evaluate = evaluate_array,
                                        unsigned threads = 0);
 

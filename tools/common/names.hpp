@@ -9,7 +9,9 @@
 namespace kutlog {
 
 constexpr std::string_view variant_name(Variant variant) {
-  return variant == Variant::precise ? "precise" : "fast";
+  return variant == Variant::precise ? "precise"
+         : variant == Variant::fast  ? "fast"
+                                     : "deterministic";
 }
 constexpr std::string_view normalization_name(Normalization normalization) {
   return normalization == Normalization::none ? "none" : "exact_coef";

@@ -31,7 +31,7 @@ struct Inspector {
   }
   static double c(const Lobe& lobe) { return lobe.c_; }
   static const PerLaneKernel& kernel(const PerLaneLobe& lobe, Variant variant) {
-    return lobe.kernels_[int(variant)];
+    return lobe.kernels_[int(variant == Variant::fast)];
   }
   static const SamplerKernel& kernel(const LobeSampler& sampler) { return sampler.kernel_; }
   static double limit(const LobeSampler& sampler) { return sampler.limit_; }

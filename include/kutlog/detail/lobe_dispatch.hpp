@@ -22,21 +22,26 @@ using LobeArrayKernel = void (*)(const LobeKernel&, const float*, float*, std::s
 // and split without the clamp (LobeKernel::clamped; compensated kernels keep it), unrolled and
 // testing no flag; in the last slot, one for any kernel. A Lobe computes its kernels' slots at
 // setup, so that a call picks its loop with one load. FMA-less archs are never given a
-// compensated kernel: Lobe keeps those for Arithmetic::fused. Filled per arch by
-// src/arch/lobe_loops.hpp; here because Lobe's array eval reads it inline.
+// compensated kernel: Lobe keeps those for Arithmetic::fused. deterministic_by_slot, the same
+// slots for Variant::deterministic, runs unfused kernels unfused (on FMA-less archs, the same
+// loops). Filled per arch by src/arch/lobe_loops.hpp; here because Lobe's array eval reads it
+// inline.
 struct LobeArrayKernels {
   static constexpr int kMaxArrayUnrolledDegree = 16;
   static constexpr int kSlotsPerDegree = 5;
   static constexpr int kSlots = kSlotsPerDegree * (kMaxArrayUnrolledDegree + 1) + 1;
   bool fused_fma;  // which of a Lobe's kernels this arch runs
   LobeArrayKernel by_slot[kSlots];
+  LobeArrayKernel deterministic_by_slot[kSlots];
   static constexpr int slot_of(const LobeKernel& kernel) {
     if (kernel.form != LobeKernel::Form::polynomial || kernel.degree > kMaxArrayUnrolledDegree)
       return kSlots - 1;
     const int finish = kernel.compensated ? 2 : kernel.scale_lo != 0 ? 1 : 0;
     return kSlotsPerDegree * kernel.degree + (kernel.clamped || finish == 2 ? finish : 3 + finish);
   }
-  LobeArrayKernel of(const LobeKernel& kernel) const { return by_slot[slot_of(kernel)]; }
+  LobeArrayKernel of(const LobeKernel& kernel, bool deterministic) const {
+    return (deterministic ? deterministic_by_slot : by_slot)[slot_of(kernel)];
+  }
 };
 }  // namespace detail
 

@@ -27,25 +27,27 @@ inline floats<Arch> zero_where(xsimd::batch_bool<float, Arch> cut, floats<Arch> 
   return ops::zero_where(cut, value, Arch{});
 }
 
-// a * b + c, fused where the arch has FMA (has_fused_fma), else two roundings.
-template <class T, class Arch>
+// a * b + c, fused where the arch has FMA (has_fused_fma) and kMayFuse, else two roundings.
+// kMayFuse = false is the deterministic mode's arithmetic (Variant::deterministic): the same
+// bits on every arch, as long as the code is compiled unfused (-ffp-contract=off).
+template <bool kMayFuse = true, class T, class Arch>
 inline xsimd::batch<T, Arch> mul_add(xsimd::batch<T, Arch> a, xsimd::batch<T, Arch> b,
                                      xsimd::batch<T, Arch> c) {
-  if constexpr (!has_fused_fma<Arch>) return a * b + c;  // as has_fused_fma promises
+  if constexpr (!(kMayFuse && has_fused_fma<Arch>)) return a * b + c;
   else return ops::fused_mul_add(a, b, c, Arch{});
 }
 // a * b - c
-template <class T, class Arch>
+template <bool kMayFuse = true, class T, class Arch>
 inline xsimd::batch<T, Arch> mul_sub(xsimd::batch<T, Arch> a, xsimd::batch<T, Arch> b,
                                      xsimd::batch<T, Arch> c) {
-  if constexpr (!has_fused_fma<Arch>) return a * b - c;  // as has_fused_fma promises
+  if constexpr (!(kMayFuse && has_fused_fma<Arch>)) return a * b - c;
   else return ops::fused_mul_sub(a, b, c, Arch{});
 }
 // c - a * b
-template <class T, class Arch>
+template <bool kMayFuse = true, class T, class Arch>
 inline xsimd::batch<T, Arch> neg_mul_add(xsimd::batch<T, Arch> a, xsimd::batch<T, Arch> b,
                                          xsimd::batch<T, Arch> c) {
-  if constexpr (!has_fused_fma<Arch>) return c - a * b;  // as has_fused_fma promises
+  if constexpr (!(kMayFuse && has_fused_fma<Arch>)) return c - a * b;
   else return ops::fused_neg_mul_add(a, b, c, Arch{});
 }
 

@@ -47,8 +47,8 @@ inline Batch clamp_zero_to(Batch value, Batch upper) {
 // Horner's rule from c[degree] down, the degree a setup's (the per-lane kernels'). Degrees 0
 // to 3, the setup's usual, by branches the predictor learns (a jump table's indirect jump cost
 // 12% of the per-lane lobe at n = 1000); the others enter the chain at the degree's step,
-// where a loop measured 6% slower.
-template <class Batch>
+// where a loop measured 6% slower. kMayFuse as mul_add's.
+template <bool kMayFuse = true, class Batch>
 [[gnu::always_inline]] inline Batch horner_to(
     Batch x, const std::array<Batch, kutlog::detail::PerLaneKernel::kMaxDegree + 1>& c,
     int degree) {
@@ -56,12 +56,13 @@ template <class Batch>
                     kutlog::detail::PerLanePowerPolyKernel::kMaxDegree == 20,
                 "one step per degree below");
   if (degree == 0) return c[0];
-  if (degree == 1) return mul_add(c[1], x, c[0]);
-  if (degree == 2) return mul_add(mul_add(c[2], x, c[1]), x, c[0]);
-  if (degree == 3) return mul_add(mul_add(mul_add(c[3], x, c[2]), x, c[1]), x, c[0]);
+  const auto step = [](Batch a, Batch b, Batch addend) { return mul_add<kMayFuse>(a, b, addend); };
+  if (degree == 1) return step(c[1], x, c[0]);
+  if (degree == 2) return step(step(c[2], x, c[1]), x, c[0]);
+  if (degree == 3) return step(step(step(c[3], x, c[2]), x, c[1]), x, c[0]);
   Batch r = c[std::size_t(degree)];
   switch (degree) {
-#define KUTLOG_STEP(d) case d: r = mul_add(r, x, c[d - 1]); [[fallthrough]];
+#define KUTLOG_STEP(d) case d: r = step(r, x, c[d - 1]); [[fallthrough]];
     KUTLOG_STEP(20) KUTLOG_STEP(19) KUTLOG_STEP(18) KUTLOG_STEP(17) KUTLOG_STEP(16)
     KUTLOG_STEP(15) KUTLOG_STEP(14) KUTLOG_STEP(13) KUTLOG_STEP(12) KUTLOG_STEP(11)
     KUTLOG_STEP(10) KUTLOG_STEP(9) KUTLOG_STEP(8) KUTLOG_STEP(7) KUTLOG_STEP(6)
@@ -78,17 +79,22 @@ template <class Batch>
 enum class LobeFinish { any, plain, split, compensated };
 
 // The finish a kernel runs with on an arch: what PreparedLobe<Arch, kDegree, finish> needs.
-template <class Arch>
+template <class Arch, bool kMayFuse = true>
 constexpr LobeFinish lobe_finish(const kutlog::detail::LobeKernel& kernel) {
-  if (has_fused_fma<Arch> && kernel.compensated) return LobeFinish::compensated;
+  if (kMayFuse && has_fused_fma<Arch> && kernel.compensated) return LobeFinish::compensated;
   return kernel.scale_lo != 0 ? LobeFinish::split : LobeFinish::plain;
 }
 
 // A LobeKernel with its constants broadcast once. kDegree >= 0 and kFinish other than `any`
 // must equal the kernel's (Horner unrolled, no flag tested); kClamped = false drops the clamp
-// where the setup proved it needless (kernel.clamped false). See src/arch/lobe_loops.hpp.
-template <class Arch, int kDegree = -1, LobeFinish kFinish = LobeFinish::any, bool kClamped = true>
+// where the setup proved it needless (kernel.clamped false). kDeterministic runs every
+// multiply-add unfused (Variant::deterministic, on the kernel of Arithmetic::unfused): plain
+// IEEE operations, the same bits on every arch. See src/arch/lobe_loops.hpp.
+template <class Arch, int kDegree = -1, LobeFinish kFinish = LobeFinish::any, bool kClamped = true,
+          bool kDeterministic = false>
 class PreparedLobe {
+  static constexpr bool kMayFuse = !kDeterministic;
+
  public:
   using F = floats<Arch>;
   using D = doubles<Arch>;
@@ -96,7 +102,7 @@ class PreparedLobe {
   // Broadcasts only the coefficients the degree uses: a small span pays for nothing else.
   explicit PreparedLobe(const kutlog::detail::LobeKernel& kernel)
       : kernel_(kernel), t_cut_(kernel.t_cut), center_(kernel.center_t), scale_(kernel.scale_f),
-        finish_(kFinish == LobeFinish::any ? lobe_finish<Arch>(kernel) : kFinish) {
+        finish_(kFinish == LobeFinish::any ? lobe_finish<Arch, kMayFuse>(kernel) : kFinish) {
     if (finish() != LobeFinish::plain) scale_lo_ = F(kernel.scale_lo);
     const std::size_t degree = std::size_t(kDegree >= 0 ? kDegree : kernel.degree);
     for (std::size_t i = 0; i <= degree && i < q_.size(); ++i) q_[i] = F(kernel.q_f[i]);
@@ -123,16 +129,16 @@ class PreparedLobe {
     if constexpr (kDegree >= 1) {
       r = q_[kDegree];
       [&]<int... i>(std::integer_sequence<int, i...>) {
-        ((r = mul_add(r, s, q_[kDegree - 1 - i])), ...);
+        ((r = mul_add<kMayFuse>(r, s, q_[kDegree - 1 - i])), ...);
       }(std::make_integer_sequence<int, kDegree - 1>());
     } else {
       std::size_t i = std::size_t(degree);
       r = q_[i];
-      while (i-- > 1) r = mul_add(r, s, q_[i]);
+      while (i-- > 1) r = mul_add<kMayFuse>(r, s, q_[i]);
     }
-    if constexpr (has_fused_fma<Arch>)
+    if constexpr (kMayFuse && has_fused_fma<Arch>)
       if (finish() == LobeFinish::compensated) return compensated_cut_at(t, w, s, r);
-    return cut_at(t, w, mul_add(r, s, q_[0]));
+    return cut_at(t, w, mul_add<kMayFuse>(r, s, q_[0]));
   }
 
   LobeFinish finish() const { return kFinish == LobeFinish::any ? finish_ : kFinish; }
@@ -149,7 +155,10 @@ class PreparedLobe {
   // scale - w q, or scale + (scale_lo - w q), where t > t_cut or NaN, else 0.
   [[gnu::always_inline]] F cut_at(F t, F w, F q) const {
     if (finish() == LobeFinish::split)
-      return ops::add_where_above(t, t_cut_, scale_, neg_mul_add(w, q, scale_lo_), Arch{});
+      return ops::add_where_above(t, t_cut_, scale_, neg_mul_add<kMayFuse>(w, q, scale_lo_),
+                                  Arch{});
+    if constexpr (kDeterministic)  // AVX-512's masked form is fused
+      return zero_where(t <= t_cut_, neg_mul_add<false>(w, q, scale_));
     return ops::neg_mul_add_where_above(t, t_cut_, w, q, scale_, Arch{});
   }
 
@@ -159,9 +168,9 @@ class PreparedLobe {
       const D w = xsimd::max(D(0.0), D(1.0) - t_half);
       std::size_t i = std::size_t(kernel_.degree);
       D q(kernel_.q_d[i]);
-      while (i-- > 0) q = mul_add(q, w, D(kernel_.q_d[i]));
+      while (i-- > 0) q = mul_add<kMayFuse>(q, w, D(kernel_.q_d[i]));
       return D(kernel_.scale_d) *
-             kutlog::detail::integer_power(neg_mul_add(w, q, D(1.0)), kernel_.k);
+             kutlog::detail::integer_power(neg_mul_add<kMayFuse>(w, q, D(1.0)), kernel_.k);
     };
     const Pair<D> halves = widen(t);
     return narrow(half(halves.hi), half(halves.lo));
@@ -181,12 +190,16 @@ class PreparedLobe {
 // be the kernel's power or in_double (slower, within the precise bound); compensated needs a
 // fused multiply-add. kInN, the kernel's in_n, needs one too (a compile-time choice: as a
 // branch the line of c^2 cost AVX2 a tenth of its rate); kWClamped must be the kernel's
-// w_clamped or true.
+// w_clamped or true. kDeterministic (Variant::deterministic, on the precise kernel, kPower
+// in_float or in_double, kInN false) runs every multiply-add unfused and divides for 1/n where
+// the others refine the arch's estimate: the same bits on every arch.
 template <class Arch, Variant kVariant = Variant::precise,
           kutlog::detail::PerLaneKernel::Power kPower =
               kutlog::detail::PerLaneKernel::Power::in_double,
-          bool kInN = false, bool kWClamped = true>
+          bool kInN = false, bool kWClamped = true, bool kDeterministic = false>
 class PreparedPerLaneLobe {
+  static constexpr bool kMayFuse = !kDeterministic;
+
  public:
   using F = floats<Arch>;
   static constexpr int kBaseDegree = kVariant == Variant::fast
@@ -207,7 +220,7 @@ class PreparedPerLaneLobe {
     const F n_clamped = xsimd::min(F(kernel_.n_max), xsimd::max(F(kernel_.n_min), n));
     F c_squared, y_offset;
     if constexpr (kInN) {
-      static_assert(has_fused_fma<Arch>, "the line is bounded for one rounding");
+      static_assert(kMayFuse && has_fused_fma<Arch>, "the line is bounded for one rounding");
       if constexpr (kVariant == Variant::fast) {  // its slope is one float
         c_squared = mul_add(c_squared_slope_, n_clamped, h_[1]);
       } else {
@@ -215,24 +228,29 @@ class PreparedPerLaneLobe {
         c_squared = mul_add(c_squared_slope_, n_clamped, low);
       }
     } else {
-      F y = xsimd::reciprocal(n_clamped);  // 12 or 14 bits, refined by one Newton step
-      y = mul_add(y, neg_mul_add(n_clamped, y, F(1.0f)), y);
+      F y;
+      if constexpr (kDeterministic) {
+        y = F(1.0f) / n_clamped;  // the estimates differ by arch
+      } else {
+        y = xsimd::reciprocal(n_clamped);  // 12 or 14 bits, refined by one Newton step
+        y = mul_add(y, neg_mul_add(n_clamped, y, F(1.0f)), y);
+      }
       y_offset = y - F(kernel_.y_center);
-      c_squared = n_clamped * detail::horner_to(y_offset, h_, kernel_.h_degree);
+      c_squared = n_clamped * detail::horner_to<kMayFuse>(y_offset, h_, kernel_.h_degree);
     }
     // Past w_limit every lane's v >= v_cut: clamped there (min keeps NaN), or, where G's
     // coefficients are positive, by w G(w) growing on its own.
     F w = F(1.0f) - xsimd::min(F(1.0f), t);
     if constexpr (kWClamped) w = xsimd::min(F(kernel_.w_limit), w);
-    const F v = c_squared * (w * detail::horner_to(w, g_, kernel_.g_degree));
+    const F v = c_squared * (w * detail::horner_to<kMayFuse>(w, g_, kernel_.g_degree));
     F r = r_[kBaseDegree];
-    for (int i = kBaseDegree; i-- > 0;) r = mul_add(r, v, r_[std::size_t(i)]);
+    for (int i = kBaseDegree; i-- > 0;) r = mul_add<kMayFuse>(r, v, r_[std::size_t(i)]);
     // The base is in [0, 1] where v < v_cut: v r >= 0, and the cut's margin exceeds R's error
     // (src/per_lane_lobe.cpp). Its power is too.
     using Power = kutlog::detail::PerLaneKernel::Power;
     F value;
     if constexpr (kPower == Power::in_float)
-      value = kutlog::detail::integer_power(neg_mul_add(v, r, F(1.0f)), kernel_.k);
+      value = kutlog::detail::integer_power(neg_mul_add<kMayFuse>(v, r, F(1.0f)), kernel_.k);
     else if constexpr (kPower == Power::compensated)
       value = compensated_power(v, r);
     else
@@ -244,7 +262,7 @@ class PreparedPerLaneLobe {
       coef = mul_add(coef_n_slope_, n_clamped,
                      detail::horner_to(n_clamped, coef_n_, kernel_.coef_n_degree));
     else
-      coef = n_clamped * detail::horner_to(y_offset, coef_k_, kernel_.k_degree);
+      coef = n_clamped * detail::horner_to<kMayFuse>(y_offset, coef_k_, kernel_.k_degree);
     return ops::mul_where_below(v, F(kernel_.v_cut), value, coef, Arch{});
   }
 
@@ -253,7 +271,7 @@ class PreparedPerLaneLobe {
   // (e within its own rounding): the base's rounding, k-fold in b^k, is carried out. 1 - b
   // is exact where b >= 1/2, all of F >= 0.6 (the epicenter); below, F's error stays small.
   [[gnu::always_inline]] F compensated_power(F v, F r) const {
-    static_assert(has_fused_fma<Arch>, "e is exact only with a fused multiply-add");
+    static_assert(kMayFuse && has_fused_fma<Arch>, "e is exact only with a fused multiply-add");
     const F base = neg_mul_add(v, r, F(1.0f));
     const F error = neg_mul_add(v, r, F(1.0f) - base);
     return kutlog::detail::integer_power(base, kernel_.k - 1) * mul_add(k_, error, base);
@@ -264,7 +282,8 @@ class PreparedPerLaneLobe {
     using D = doubles<Arch>;
     const Pair<D> v_halves = widen(v), r_halves = widen(r);
     const auto half = [this](D v_half, D r_half) {
-      return kutlog::detail::integer_power(neg_mul_add(v_half, r_half, D(1.0)), kernel_.k);
+      return kutlog::detail::integer_power(neg_mul_add<kMayFuse>(v_half, r_half, D(1.0)),
+                                           kernel_.k);
     };
     return narrow(half(v_halves.hi, r_halves.hi), half(v_halves.lo, r_halves.lo));
   }

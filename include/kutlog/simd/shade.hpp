@@ -18,28 +18,31 @@ struct Vector3 {
   floats<Arch> x, y, z;
 };
 
-template <class Arch>
+// kMayFuse as mul_add's (false: Variant::deterministic).
+template <bool kMayFuse = true, class Arch>
 inline floats<Arch> dot(const Vector3<Arch>& a, const Vector3<Arch>& b) {
-  return mul_add(a.x, b.x, mul_add(a.y, b.y, a.z * b.z));
+  return mul_add<kMayFuse>(a.x, b.x, mul_add<kMayFuse>(a.y, b.y, a.z * b.z));
 }
 
 // N.H with H = (L + V) / |L + V|; 0 where L + V = 0 (or |L + V|^2 underflows). Tested as
 // == 0, not !(> 0), so that a NaN in L or V stays NaN.
-template <class Arch>
+template <bool kMayFuse = true, class Arch>
 inline floats<Arch> blinn_cosine(const Vector3<Arch>& normal, const Vector3<Arch>& to_light,
                                  const Vector3<Arch>& to_viewer) {
   using F = floats<Arch>;
   const Vector3<Arch> sum{to_light.x + to_viewer.x, to_light.y + to_viewer.y,
                           to_light.z + to_viewer.z};
-  const F length_squared = dot(sum, sum);
-  return zero_where(length_squared == F(0.0f), dot(normal, sum) / xsimd::sqrt(length_squared));
+  const F length_squared = dot<kMayFuse>(sum, sum);
+  return zero_where(length_squared == F(0.0f),
+                    dot<kMayFuse>(normal, sum) / xsimd::sqrt(length_squared));
 }
 
 // R.V with R = 2 (N.L) N - L, from N.L.
-template <class Arch>
+template <bool kMayFuse = true, class Arch>
 inline floats<Arch> phong_cosine(const Vector3<Arch>& normal, const Vector3<Arch>& to_light,
                                  const Vector3<Arch>& to_viewer, floats<Arch> n_dot_l) {
-  return mul_sub(n_dot_l + n_dot_l, dot(normal, to_viewer), dot(to_light, to_viewer));
+  return mul_sub<kMayFuse>(n_dot_l + n_dot_l, dot<kMayFuse>(normal, to_viewer),
+                           dot<kMayFuse>(to_light, to_viewer));
 }
 
 // mask[0 .. size) != 0 as a batch_bool (reads exactly size bytes).
