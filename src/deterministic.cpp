@@ -17,6 +17,7 @@ using Portable = simd::portable;
 // The portable arch's deterministic loop for any unfused kernel: its degree in a loop (the
 // same operations as an unrolled slot's), clamped (where the setup dropped a kernel's clamp it
 // proved the output within it: the same bits).
+using DeterministicLobe = simd::PreparedLobe<Portable, -1, simd::LobeFinish::any, true, true>;
 constexpr detail::LobeArrayKernel kDeterministicLoop =
     &detail::kutlog_lobe_loop<Portable, -1, simd::LobeFinish::any, true, true>;
 }  // namespace
@@ -24,9 +25,8 @@ constexpr detail::LobeArrayKernel kDeterministicLoop =
 float Lobe::eval_deterministic(float t, Normalization normalization) const noexcept {
   const detail::LobeKernel& kernel =
       kernels_[kernel_index(Variant::deterministic, normalization, detail::Arithmetic::unfused)];
-  float out;
-  kDeterministicLoop(kernel, &t, &out, 1);
-  return out;
+  // The loop's kernel on t in every lane: the loop's partial batch costs as much again.
+  return DeterministicLobe(kernel)(simd::floats<Portable>(t)).get(0);
 }
 
 detail::EpicenterLoops detail::unfused_epicenter_loops() {

@@ -295,13 +295,19 @@ std::optional<CertifiedKernel> fit_base_power(detail::LobeKernel kernel, Quotien
     kernel.degree = degree;
     kernel.q_d.fill(0);
     kernel.q_f.fill(0);
-    for (int i = 0; i <= degree; ++i) {
-      kernel.q_d[i] = double(fit->monomials[i]);
-      kernel.q_f[i] = float(kernel.q_d[i]);
+    // Unfused (the deterministic mode's), the coefficients rounded to float first: fits in the
+    // long double of x86-64 and of AArch64 differ near 2^-44 of a coefficient, in double's last
+    // bits, and round to the same float but where one lies that near a float's midpoint.
+    for (const bool in_float_precision : {arithmetic == detail::Arithmetic::unfused, false}) {
+      for (int i = 0; i <= degree; ++i) {
+        kernel.q_f[i] = float(double(fit->monomials[i]));
+        kernel.q_d[i] = in_float_precision ? double(kernel.q_f[i]) : double(fit->monomials[i]);
+      }
+      if (const auto certified =
+              meets(kernel, arithmetic, *fit, scale, profiles, false, target, nullptr))
+        return CertifiedKernel{kernel, *certified};
+      if (!in_float_precision) break;
     }
-    if (const auto certified =
-            meets(kernel, arithmetic, *fit, scale, profiles, false, target, nullptr))
-      return CertifiedKernel{kernel, *certified};
     // In float, once the fit's own error is negligible, a higher degree only adds roundings:
     // the try ends there (it fails for the precise variant, whose setup it would slow).
     if (kernel.scalar_in_float && series.converged() &&

@@ -7,7 +7,9 @@
 // x for x^(2^j) in the level-by-level loop (degree above 12) fails RandomLobesDensely.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cfloat>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -75,6 +77,36 @@ TEST(LobeScalar, DataRuleAsTheArrays) {
   EXPECT_TRUE(std::isnan(per_lane.eval(0.999f, kNaN)));
   EXPECT_TRUE(std::isnan(per_lane.eval(-1.0f, kNaN)));
   EXPECT_EQ(per_lane.eval(0.999f, 1e6f), per_lane.eval(0.999f, 1000.0f));  // clamped to n_max
+}
+
+// Variant::deterministic's one fragment, called from code built with this binary's flags (a
+// caller's FMA and -ffp-contract=fast, or -ffast-math), gives the bits of every arch's arrays:
+// it runs out of line, compiled with the library's flags. Every 257th float of [-0.1, 1.01],
+// NaNs, zeros, subnormals and infinities.
+TEST(LobeScalar, DeterministicIsTheArraysBitsWhateverTheCallersFlags) {
+  std::vector<float> t;
+  for (std::uint32_t bits = std::bit_cast<std::uint32_t>(1.01f); bits >= 257; bits -= 257)
+    t.push_back(std::bit_cast<float>(bits));
+  for (std::uint32_t bits = 0x80000000u; bits <= std::bit_cast<std::uint32_t>(-0.1f); bits += 257)
+    t.push_back(std::bit_cast<float>(bits));
+  for (std::uint32_t bits : {0x7fc00000u, 0xffc12345u, 0x7f800001u, 0x00000001u, 0x80000001u,
+                             0x007fffffu, 0x00000000u, 0x80000000u, 0x7f800000u, 0xff800000u})
+    t.push_back(std::bit_cast<float>(bits));
+  std::vector<float> one(t.size()), arrays(t.size());
+  for (const LobeCase& c : {LobeCase{1000, 3, 0.5}, LobeCase{0.7, 2, 0.3}, LobeCase{20, 40, 0.8}})
+    for (Normalization normalization : tools::kLobeNormalizations) {
+      const Lobe lobe(c.n, c.k, c.Q);
+      for (std::size_t i = 0; i < t.size(); ++i)
+        one[i] = lobe.eval(t[i], Variant::deterministic, normalization);
+      for (Arch arch : supported_archs()) {
+        const inspect::ScopedArch forced(arch);
+        lobe.eval(t.data(), arrays.data(), t.size(), Variant::deterministic, normalization);
+        for (std::size_t i = 0; i < t.size(); ++i)
+          ASSERT_EQ(std::bit_cast<std::uint32_t>(one[i]), std::bit_cast<std::uint32_t>(arrays[i]))
+              << arch_name(arch) << ", " << testing::PrintToString(c) << ", t bits 0x" << std::hex
+              << std::bit_cast<std::uint32_t>(t[i]);
+      }
+    }
 }
 
 // t_cut(), the bound a caller's own branch tests: the largest float at or below the cosine of
