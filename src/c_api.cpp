@@ -129,19 +129,23 @@ kutlog_status kutlog_sampler_create(double n, int k, double Q, kutlog_lobe_use u
   return create(sampler, error, n, k, Q, kutlog::LobeUse(use));
 }
 void kutlog_sampler_destroy(kutlog_sampler* sampler) { delete sampler; }
-kutlog_sample kutlog_sampler_sample(const kutlog_sampler* sampler, float u1, float u2) {
-  if (!sampler) return {kNaN, kNaN, kNaN, kNaN};
-  const kutlog::SampledDirection direction = sampler->sampler.sample(u1, u2);
+kutlog_sample kutlog_sampler_sample(const kutlog_sampler* sampler, float u1, float u2,
+                                    kutlog_variant variant) {
+  if (!sampler || !valid_variant(variant)) return {kNaN, kNaN, kNaN, kNaN};
+  const kutlog::SampledDirection direction =
+      sampler->sampler.sample(u1, u2, kutlog::Variant(variant));
   return {direction.x, direction.y, direction.z, direction.pdf};
 }
 kutlog_status kutlog_sampler_sample_array(const kutlog_sampler* sampler, const float* u1,
                                           const float* u2, float* x, float* y, float* z,
-                                          float* pdf, std::size_t count, kutlog_error* error) {
+                                          float* pdf, std::size_t count, kutlog_variant variant,
+                                          kutlog_error* error) {
   return guarded(error, [&] {
-    if (const kutlog_status status = Check(error).handle(sampler, "sampler").arrays(
-            count, {{"u1", u1}, {"u2", u2}, {"x", x}, {"y", y}, {"z", z}, {"pdf", pdf}}))
+    if (const kutlog_status status =
+            Check(error).handle(sampler, "sampler").variant(variant).arrays(
+                count, {{"u1", u1}, {"u2", u2}, {"x", x}, {"y", y}, {"z", z}, {"pdf", pdf}}))
       return status;
-    sampler->sampler.sample(u1, u2, {x, y, z, pdf}, count);
+    sampler->sampler.sample(u1, u2, {x, y, z, pdf}, count, kutlog::Variant(variant));
     return KUTLOG_OK;
   });
 }

@@ -1,6 +1,7 @@
 // The public array functions: each forwards to the active arch's kernel table. Compiled with
 // the baseline flags only.
 #include "active_table.hpp"
+#include "deterministic.hpp"
 #include "kutlog/baselines.hpp"
 #include "kutlog/detail/math_functions.hpp"
 #include "kutlog/inspect.hpp"
@@ -66,11 +67,12 @@ void schlick(const float* t, float* out, std::size_t count, float n) {
 }
 
 void LobeSampler::sample(const float* u1, const float* u2, DirectionSamples out,
-                         std::size_t count) const noexcept {
-  active_table().sample_lobe(kernel_, u1, u2, out, count);
+                         std::size_t count, Variant variant) const noexcept {
+  active_table().sample_lobe(kernel_, variant == Variant::deterministic, u1, u2, out, count);
 }
 
-SampledDirection LobeSampler::sample(float u1, float u2) const noexcept {
+SampledDirection LobeSampler::sample(float u1, float u2, Variant variant) const noexcept {
+  if (variant == Variant::deterministic) return detail::deterministic_sample(kernel_, u1, u2);
   return active_table().sample_one(kernel_, u1, u2);
 }
 

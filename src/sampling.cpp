@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "cpu_features.hpp"
+#include "deterministic.hpp"
+#include "kutlog/simd/sampling.hpp"
 #include "kutlog/sampling_reference.hpp"
 #include "polynomial_fit.hpp"
 
@@ -233,6 +235,14 @@ LobeSampler::LobeSampler(double n, int k, double Q, LobeUse use)
   const double rows_error = fit_rows(polar, coarse, peak, kernel_);
   kernel_.coarse_degree = coarse.degree;
   fit_error_ = std::max(coarse.error, rows_error);
+}
+
+SampledDirection detail::deterministic_sample(const SamplerKernel& kernel, float u1,
+                                             float u2) noexcept {
+  using F = simd::floats<simd::portable>;
+  const simd::SampleBatch<simd::portable> sample =
+      simd::PreparedSampler<simd::portable, false, true>(kernel)(F(u1), F(u2));
+  return {sample.x.get(0), sample.y.get(0), sample.z.get(0), sample.pdf.get(0)};
 }
 
 }  // namespace kutlog

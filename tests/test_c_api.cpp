@@ -167,20 +167,24 @@ TEST(CApi, ShadeAndSampleAreTheCppCalls) {
   ASSERT_EQ(kutlog_sampler_create(100, 3, 0.5, KUTLOG_USE_PHONG, &c_sampler, nullptr), KUTLOG_OK);
   std::vector<float> x(kCount), y(kCount), z(kCount), pdf(kCount);
   std::vector<float> cpp_x(kCount), cpp_y(kCount), cpp_z(kCount);
-  sampler.sample(u1.data(), u2.data(), {cpp_x.data(), cpp_y.data(), cpp_z.data(), expected.data()},
-                 kCount);
-  ASSERT_EQ(kutlog_sampler_sample_array(c_sampler, u1.data(), u2.data(), x.data(), y.data(),
-                                        z.data(), pdf.data(), kCount, nullptr),
-            KUTLOG_OK);
-  for (std::size_t i = 0; i < kCount; ++i) {
-    expect_same_bits(cpp_x[i], x[i], u1[i]);
-    expect_same_bits(cpp_y[i], y[i], u1[i]);
-    expect_same_bits(cpp_z[i], z[i], u1[i]);
-    expect_same_bits(expected[i], pdf[i], u1[i]);
-    const SampledDirection one = sampler.sample(u1[i], u2[i]);
-    const kutlog_sample c_one = kutlog_sampler_sample(c_sampler, u1[i], u2[i]);
-    expect_same_bits(one.z, c_one.z, u1[i]);
-    expect_same_bits(one.pdf, c_one.pdf, u1[i]);
+  for (const Variant variant : {Variant::precise, Variant::deterministic}) {
+    sampler.sample(u1.data(), u2.data(),
+                   {cpp_x.data(), cpp_y.data(), cpp_z.data(), expected.data()}, kCount, variant);
+    ASSERT_EQ(kutlog_sampler_sample_array(c_sampler, u1.data(), u2.data(), x.data(), y.data(),
+                                          z.data(), pdf.data(), kCount, kutlog_variant(variant),
+                                          nullptr),
+              KUTLOG_OK);
+    for (std::size_t i = 0; i < kCount; ++i) {
+      expect_same_bits(cpp_x[i], x[i], u1[i]);
+      expect_same_bits(cpp_y[i], y[i], u1[i]);
+      expect_same_bits(cpp_z[i], z[i], u1[i]);
+      expect_same_bits(expected[i], pdf[i], u1[i]);
+      const SampledDirection one = sampler.sample(u1[i], u2[i], variant);
+      const kutlog_sample c_one =
+          kutlog_sampler_sample(c_sampler, u1[i], u2[i], kutlog_variant(variant));
+      expect_same_bits(one.z, c_one.z, u1[i]);
+      expect_same_bits(one.pdf, c_one.pdf, u1[i]);
+    }
   }
   kutlog_sampler_destroy(c_sampler);
 }
@@ -291,7 +295,7 @@ TEST(CApi, NullsCountsAndEnumsFollowTheRule) {
           "to_light.y is NULL");
   std::vector<float> x(16), y(16), z(16);
   refused(kutlog_sampler_sample_array(nullptr, t.data(), t.data(), x.data(), y.data(), z.data(),
-                                      out.data(), 16, &error),
+                                      out.data(), 16, KUTLOG_PRECISE, &error),
           "sampler is NULL");
   kutlog_fragment fragment;
   refused(kutlog_lobe_fragment(nullptr, KUTLOG_UNNORMALIZED, &fragment, &error), "lobe is NULL");
@@ -312,7 +316,7 @@ TEST(CApi, NullHandlesGiveNaN) {
   EXPECT_TRUE(std::isnan(kutlog_lobe_t_cut(nullptr)));
   EXPECT_TRUE(std::isnan(kutlog_per_lane_lobe_eval(nullptr, 0.5f, 10, KUTLOG_PRECISE,
                                                    KUTLOG_UNNORMALIZED)));
-  const kutlog_sample sample = kutlog_sampler_sample(nullptr, 0.5f, 0.5f);
+  const kutlog_sample sample = kutlog_sampler_sample(nullptr, 0.5f, 0.5f, KUTLOG_PRECISE);
   EXPECT_TRUE(std::isnan(sample.x) && std::isnan(sample.y) && std::isnan(sample.z) &&
               std::isnan(sample.pdf));
   const kutlog_fragment zeroed{};

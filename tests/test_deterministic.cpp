@@ -102,15 +102,17 @@ std::vector<float> digest_inputs(const Lobe& lobe, std::uint32_t stride) {
 // The archs this CPU runs, each as a forced arch.
 std::vector<Arch> archs() { return supported_archs(); }
 
-// Asserts that `values` are `expected`'s bits, naming the first that is not.
+// Asserts that `values` are `expected`'s bits, naming the first that is not (and its input,
+// where `inputs` has one per value).
 void expect_same_bits(const std::vector<float>& expected, const std::vector<float>& values,
-                      const std::vector<float>& t, const std::string& what) {
+                      const std::vector<float>& inputs, const std::string& what) {
   ASSERT_EQ(expected.size(), values.size()) << what;
   if (std::memcmp(expected.data(), values.data(), expected.size() * sizeof(float)) == 0) return;
   for (std::size_t i = 0; i < expected.size(); ++i)
     if (std::bit_cast<std::uint32_t>(expected[i]) != std::bit_cast<std::uint32_t>(values[i])) {
-      ADD_FAILURE() << what << ": t = " << t[i] << " (0x" << std::hex
-                    << std::bit_cast<std::uint32_t>(t[i]) << ") gives 0x"
+      const float input = i < inputs.size() ? inputs[i] : std::numeric_limits<float>::quiet_NaN();
+      ADD_FAILURE() << what << ": output " << i << ", input " << input << " (0x" << std::hex
+                    << std::bit_cast<std::uint32_t>(input) << ") gives 0x"
                     << std::bit_cast<std::uint32_t>(values[i]) << ", expected 0x"
                     << std::bit_cast<std::uint32_t>(expected[i]);
       return;
@@ -200,6 +202,39 @@ std::vector<float> per_lane_outputs(const PerLaneLobe& lobe, const std::vector<f
   return all;
 }
 
+// A sampler's 2^18 samples and the data rule's (u1, u2) by one arch's arrays, its one-sample
+// call asserted equal: x, y, z and pdf of each in turn.
+std::vector<float> sampler_outputs(const LobeSampler& sampler, Arch arch) {
+  const inspect::ScopedArch forced(arch);
+  std::vector<float> u1, u2;
+  std::uint64_t seed = 77;
+  for (int i = 0; i < 1 << 18; ++i) {
+    seed = seed * 6364136223846793005u + 1442695040888963407u;
+    u1.push_back(float(seed >> 40) * 0x1p-24f);
+    u2.push_back(float((seed >> 16) & 0xffffffu) * 0x1p-24f);
+  }
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  for (float special : {0.0f, -0.0f, 0x1p-149f, 0x1p-60f, 0.5f, 0x1.fffffep-1f, 1.0f, 2.0f, -1.0f,
+                        inf, -inf, std::bit_cast<float>(0x7fc00000u),
+                        std::bit_cast<float>(0xff812345u)})
+    for (float other : {0.0f, 0.3f, 0x1.fffffep-1f, std::bit_cast<float>(0x7fc12345u)})
+      u1.push_back(special), u2.push_back(other), u1.push_back(other), u2.push_back(special);
+  const std::size_t count = u1.size();
+  std::vector<float> x(count), y(count), z(count), pdf(count), one(4 * count), all;
+  sampler.sample(u1.data(), u2.data(), {x.data(), y.data(), z.data(), pdf.data()}, count,
+                 kDeterministic);
+  for (const std::vector<float>* output : {&x, &y, &z, &pdf})
+    all.insert(all.end(), output->begin(), output->end());
+  for (std::size_t i = 0; i < count; ++i) {
+    const SampledDirection d = sampler.sample(u1[i], u2[i], kDeterministic);
+    one[i] = d.x, one[count + i] = d.y, one[2 * count + i] = d.z, one[3 * count + i] = d.pdf;
+  }
+  std::vector<float> inputs(u1);
+  for (int copy = 0; copy < 3; ++copy) inputs.insert(inputs.end(), u1.begin(), u1.end());
+  expect_same_bits(all, one, inputs, std::string(arch_name(arch)) + ": one sample per call");
+  return all;
+}
+
 // Every output of every path, by name, for the digest: each arch's must be the first arch's.
 std::map<std::string, std::uint64_t> current_digests() {
   std::map<std::string, std::uint64_t> digests;
@@ -228,6 +263,17 @@ std::map<std::string, std::uint64_t> current_digests() {
     }
     std::vector<float> first;
     for (Arch arch : archs()) record(name + " shade", shade_outputs(lobe, arch), {}, &first);
+  }
+  for (const auto& [n, k, use] : {std::tuple{1000.0, 3, LobeUse::microfacet},
+                                  std::tuple{30.0, 1, LobeUse::phong},
+                                  std::tuple{3.0, 8, LobeUse::microfacet},
+                                  std::tuple{1e5, 40, LobeUse::phong}}) {
+    const LobeSampler sampler(n, k, 0.5, use);
+    std::vector<float> first;
+    for (Arch arch : archs())
+      record("sampler n=" + testing::PrintToString(n) + " k=" + std::to_string(k) +
+                 (use == LobeUse::phong ? " phong" : " microfacet"),
+             sampler_outputs(sampler, arch), {}, &first);
   }
   const std::vector<float> t = digest_inputs(Lobe(100, 3, 0.5), 65521);
   std::vector<float> n(t.size());

@@ -98,6 +98,14 @@ Samples draw_arrays(const LobeSampler& sampler, const std::vector<float>& u1,
   return samples;
 }
 
+// Variant::deterministic's arrays: the rows on every arch, unfused.
+Samples draw_deterministic(const LobeSampler& sampler, const std::vector<float>& u1,
+                           const std::vector<float>& u2) {
+  Samples samples(u1.size());
+  sampler.sample(u1.data(), u2.data(), samples.out(), u1.size(), Variant::deterministic);
+  return samples;
+}
+
 Samples draw_one_per_call(const LobeSampler& sampler, const std::vector<float>& u1,
                           const std::vector<float>& u2) {
   Samples samples(u1.size());
@@ -257,6 +265,14 @@ TEST_P(LobeSamplerPerArch, NarrowestLobesWithinBounds) {
 TEST_P(LobeSamplerPerArch, OnePerCallNarrowestLobesWithinBounds) {
   narrowest_lobes_within_bounds(draw_one_per_call);
 }
+TEST_P(LobeSamplerPerArch, DeterministicGridWithinBounds) { grid_within_bounds(draw_deterministic); }
+TEST_P(LobeSamplerPerArch, DeterministicRandomLobesWithinBounds) {
+  random_lobes_within_bounds(draw_deterministic);
+}
+TEST_P(LobeSamplerPerArch, DeterministicNarrowestLobesWithinBounds) {
+  narrowest_lobes_within_bounds(draw_deterministic);
+}
+TEST_P(LobeSamplerPerArch, DeterministicDataRule) { data_rule(draw_deterministic); }
 
 // The data rule, and every count gives what the whole array gives (the tails are partial
 // batches).

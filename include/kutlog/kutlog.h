@@ -264,14 +264,17 @@ KUTLOG_C_API void kutlog_sampler_destroy(kutlog_sampler* sampler);
 typedef struct kutlog_sample {
   float x, y, z, pdf;
 } kutlog_sample;
-/* One sample, out of line; every field NaN for a NULL sampler. */
+/* One sample, out of line; every field NaN for a NULL sampler or a variant out of range.
+ * KUTLOG_DETERMINISTIC: the same bits on every CPU and as the arrays'; KUTLOG_FAST samples as
+ * KUTLOG_PRECISE. */
 KUTLOG_C_API kutlog_sample kutlog_sampler_sample(const kutlog_sampler* sampler, float u1,
-                                                 float u2);
+                                                 float u2, kutlog_variant variant);
 /* count samples into x, y, z and pdf, which must not overlap u1 or u2. */
 KUTLOG_C_API kutlog_status kutlog_sampler_sample_array(const kutlog_sampler* sampler,
                                                        const float* u1, const float* u2,
                                                        float* x, float* y, float* z, float* pdf,
-                                                       size_t count, kutlog_error* error);
+                                                       size_t count, kutlog_variant variant,
+                                                       kutlog_error* error);
 
 /* ---- Math over arrays (kutlog/math.hpp), one per kernel of the list ---- */
 

@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include "kutlog/detail/sampler_kernel.hpp"
+#include "kutlog/lobe.hpp"  // Variant
 
 KUTLOG_API_BEGIN
 namespace kutlog {
@@ -68,19 +69,22 @@ class LobeSampler {
   LobeUse use() const { return use_; }
 
   // count samples from u1[i], u2[i], dispatched to the active arch. Any count and alignment;
-  // the outputs must not overlap the inputs.
-  void sample(const float* u1, const float* u2, DirectionSamples out,
-              std::size_t count) const noexcept;
+  // the outputs must not overlap the inputs. Variant::deterministic: the same bits on every
+  // arch and in the one-sample call (kutlog/lobe.hpp), within the same bounds; fast samples as
+  // precise (the sampler has one accuracy).
+  void sample(const float* u1, const float* u2, DirectionSamples out, std::size_t count,
+              Variant variant = Variant::precise) const noexcept;
 
   // One sample, a path tracer's one per bounce: scalar float code from per-cell fits of
   // sin^2(theta/2) and of the pdf, compiled per arch for its fused multiply-add and dispatched
   // out of line (the caller's flags do not reach it), with the arrays' contract and data rule,
   // asserted per arch by the same tests. For many samples at once the array call is faster.
-  SampledDirection sample(float u1, float u2) const noexcept;
+  // Variant::deterministic: the arrays' bits, by the portable arch's instance of their code.
+  SampledDirection sample(float u1, float u2, Variant variant = Variant::precise) const noexcept;
   // Floats only: a double u1 just below 1 would round to 1 without a word.
   template <class U1, class U2>
     requires(!std::is_same_v<U1, float> || !std::is_same_v<U2, float>)
-  SampledDirection sample(U1, U2) const = delete;
+  SampledDirection sample(U1, U2, Variant = Variant::precise) const = delete;
 
  private:
   friend struct detail::Inspector;

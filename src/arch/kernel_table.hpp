@@ -54,8 +54,8 @@ struct EpicenterReference {
     void(const LobeKernel&, const ShadeOptions&, const float*, const float*, float*,            \
          std::size_t, const std::uint8_t*))                                                      \
   X(sample_lobe, sample_lobe_array,                                                              \
-    void(const SamplerKernel&, const float* u1, const float* u2, DirectionSamples,              \
-         std::size_t count))                                                                     \
+    void(const SamplerKernel&, bool deterministic, const float* u1, const float* u2,           \
+         DirectionSamples, std::size_t count))                                                   \
   X(sample_one, sample_one, SampledDirection(const SamplerKernel&, float u1, float u2))         \
   X(epicenter_worst_ulp, epicenter_worst_ulp,                                                    \
     double(const EpicenterReference&, const float* t, const float* out, std::size_t count))     \

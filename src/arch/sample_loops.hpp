@@ -33,9 +33,13 @@ void sample_lobe_batches(const Sampler& sampler, const float* u1, const float* u
   store_partial<Arch>(out.pdf + i, sample.pdf, tail);
 }
 
+// deterministic: Variant::deterministic's rows, unfused, its NaN the quiet one.
 template <class Arch>
-void sample_lobe_array(const SamplerKernel& kernel, const float* u1, const float* u2,
-                       DirectionSamples out, std::size_t count) {
+void sample_lobe_array(const SamplerKernel& kernel, bool deterministic, const float* u1,
+                       const float* u2, DirectionSamples out, std::size_t count) {
+  if (deterministic)
+    return sample_lobe_batches<Arch>(simd::PreparedSampler<Arch, false, true>(kernel), u1, u2,
+                                     out, count);
   if constexpr (simd::PreparedSampler<Arch>::kRaisesPower)
     if (simd::PreparedSampler<Arch>::double_power_needed(kernel))
       return sample_lobe_batches<Arch>(simd::PreparedSampler<Arch, true>(kernel), u1, u2, out,

@@ -94,11 +94,12 @@ inline Pair<xsimd::batch<T, Arch>> two_product(xsimd::batch<T, Arch> a, xsimd::b
   }
 }
 
-// sum over i of coefficients[i] * x^i, by Horner's rule.
-template <class Batch, class T, std::size_t N>
+// sum over i of coefficients[i] * x^i, by Horner's rule; kMayFuse as mul_add's.
+template <bool kMayFuse = true, class Batch, class T, std::size_t N>
 inline Batch horner(Batch x, const std::array<T, N>& coefficients) {
   Batch result(coefficients[N - 1]);
-  for (std::size_t i = N - 1; i-- > 0;) result = mul_add(result, x, Batch(coefficients[i]));
+  for (std::size_t i = N - 1; i-- > 0;)
+    result = mul_add<kMayFuse>(result, x, Batch(coefficients[i]));
   return result;
 }
 

@@ -29,13 +29,14 @@ namespace detail {
 inline constexpr float kLargestBelowOne = 0x1.fffffep-1f;
 
 // sin and cos of |r| <= pi/4 by the cores of cos_u10 without its compensated last steps: a few
-// float roundings, which the sampler's bounds allow, at half the cost.
-template <class Arch>
+// float roundings, which the sampler's bounds allow, at half the cost. kMayFuse as mul_add's.
+template <bool kMayFuse = true, class Arch>
 inline Pair<floats<Arch>> sin_cos_quarter_pi(floats<Arch> r) {
   using F = floats<Arch>;
   const F u = r * r;
-  return {mul_add(r * u, horner(u, constants::kSin), r),
-          mul_add(u * u, horner(u, constants::kCos), neg_mul_add(F(0.5f), u, F(1.0f)))};
+  return {mul_add<kMayFuse>(r * u, horner<kMayFuse>(u, constants::kSin), r),
+          mul_add<kMayFuse>(u * u, horner<kMayFuse>(u, constants::kCos),
+                            neg_mul_add<kMayFuse>(F(0.5f), u, F(1.0f)))};
 }
 
 // sin and cos of theta in [0, pi/2]: above pi/4 through rho = pi/2 - theta, formed exactly
@@ -52,14 +53,14 @@ inline Pair<floats<Arch>> sin_cos_halfpi(floats<Arch> theta) {
 // sin and cos of the azimuth 2 pi u, u in [0, 1): 4u = q + f exactly, q an integer in 0..4,
 // |f| <= 1/2, so 2 pi u = q pi/2 + r, r = f pi/2. 4u + 1.5 2^23 rounds 4u to q and holds it
 // in its low mantissa bits, so the quadrant's swap and signs are bit operations.
-template <class Arch>
+template <bool kMayFuse = true, class Arch>
 inline Pair<floats<Arch>> sin_cos_turn(floats<Arch> u) {
   using F = floats<Arch>;
   using I = ints<Arch>;
   constexpr float kRounder = 0x1.8p23f;
   const F four_u = u * F(4.0f), rounded = four_u + F(kRounder);
   const auto [sin_r, cos_r] =
-      sin_cos_quarter_pi((four_u - (rounded - F(kRounder))) * F(constants::kHalfPiHi));
+      sin_cos_quarter_pi<kMayFuse>((four_u - (rounded - F(kRounder))) * F(constants::kHalfPiHi));
   // Quadrant q: (sin, cos) = (s, c), (c, -s), (-s, -c), (-c, s): swapped where q is odd, sin
   // negated where bit 1 of q is set, cos where bit 1 of q + 1 is (bit 1 moved to the sign).
   const I q = xsimd::bitwise_cast<I>(rounded), odd = q << 31;
@@ -150,16 +151,20 @@ inline SampleBatch<Arch> nan_where_unordered(floats<Arch> u1, floats<Arch> u2,
 
 // A SamplerKernel with its constants broadcast once, for loops over many batches. On AVX-512,
 // kDoublePower raises the lobe's base to the k-th power in double lanes: the loop chooses
-// it once (double_power_needed), not each batch.
-template <class Arch, bool kDoublePower = false>
+// it once (double_power_needed), not each batch. kDeterministic (Variant::deterministic) reads
+// rows on every arch, its multiply-adds unfused and its NaN the same: the same bits everywhere.
+template <class Arch, bool kDoublePower = false, bool kDeterministic = false>
 class PreparedSampler {
+  static constexpr bool kMayFuse = !kDeterministic;
+
  public:
   // In float, the base's rounding (2^-24 near 1) and each squaring's grow k-fold in F, within
   // the pdf bound up to this k (the grid and random lobes measure it).
   static constexpr int kFloatPowerMaxK = 5;
   // Whether this arch's batches draw theta from the coarse fit, and so raise the lobe to a
   // power (AVX-512's path; the others read rows).
-  static constexpr bool kRaisesPower = ops::samples_by_polar_angle<Arch>(Arch{});
+  static constexpr bool kRaisesPower =
+      !kDeterministic && ops::samples_by_polar_angle<Arch>(Arch{});
   static bool double_power_needed(const kutlog::detail::SamplerKernel& kernel) {
     return kRaisesPower && kernel.k > kFloatPowerMaxK;
   }
@@ -226,16 +231,17 @@ class PreparedSampler {
         xsimd::bitwise_cast<I>(xsimd::min(xsimd::bitwise_cast<U>(at.cell), last_cell)));
     const F square = x * x;
     const auto cubic = [&](std::size_t first) {
-      return mul_add(square, mul_add(c[first + 3], x, c[first + 2]),
-                     mul_add(c[first + 1], x, c[first]));
+      return mul_add<kMayFuse>(square, mul_add<kMayFuse>(c[first + 3], x, c[first + 2]),
+                               mul_add<kMayFuse>(c[first + 1], x, c[first]));
     };
     static_assert(K::kRowDegree == 3 && K::kRowStride == 8);
     const F weight = xsimd::min(u + u, F(1.0f));  // exactly 1 above 1/2
     const F scaled = xsimd::min(xsimd::max(weight * cubic(0), F(0.0f)),
                                 F(kernel_.haversine_limit));
     const F q = F(kernel_.haversine_scale) * scaled;
-    return finish(u1, u2, F(kernel_.sine_scale) * xsimd::sqrt(neg_mul_add(q, scaled, scaled)),
-                  neg_mul_add(F(2.0f), q, F(1.0f)), cubic(4));
+    return finish(u1, u2,
+                  F(kernel_.sine_scale) * xsimd::sqrt(neg_mul_add<kMayFuse>(q, scaled, scaled)),
+                  neg_mul_add<kMayFuse>(F(2.0f), q, F(1.0f)), cubic(4));
   }
 
   SampleBatch<Arch> operator()(F u1, F u2) const {
@@ -247,11 +253,16 @@ class PreparedSampler {
   // The direction from theta's sine and cosine and the azimuth 2 pi u2; the pdf clamped to
   // [0, peak]; NaN in every output where u1 or u2 is NaN.
   SampleBatch<Arch> finish(F u1, F u2, F sin_theta, F cos_theta, F density) const {
-    const auto [sin_phi, cos_phi] = detail::sin_cos_turn(detail::unit_interval(u2));
-    return detail::nan_where_unordered(
-        u1, u2,
-        {sin_theta * cos_phi, sin_theta * sin_phi, cos_theta,
-         detail::clamp_zero_to(density, peak_)});
+    const auto [sin_phi, cos_phi] = detail::sin_cos_turn<kMayFuse>(detail::unit_interval(u2));
+    const SampleBatch<Arch> sample{sin_theta * cos_phi, sin_theta * sin_phi, cos_theta,
+                                   detail::clamp_zero_to(density, peak_)};
+    if constexpr (kDeterministic) {  // the quiet NaN, where SSE and AVX set every bit
+      const auto ordered = (u1 == u1) & (u2 == u2);
+      const F nan(std::numeric_limits<float>::quiet_NaN());
+      return {xsimd::select(ordered, sample.x, nan), xsimd::select(ordered, sample.y, nan),
+              xsimd::select(ordered, sample.z, nan), xsimd::select(ordered, sample.pdf, nan)};
+    }
+    return detail::nan_where_unordered(u1, u2, sample);
   }
 
   // Each lane's row of SamplerKernel::rows, transposed: coefficient j of every lane in batch

@@ -41,7 +41,7 @@ int main(void) {
   ok &= check(kutlog_sampler_create(1000, 3, 0.5, KUTLOG_USE_MICROFACET, &sampler, &error) ==
                   KUTLOG_OK,
               error.message);
-  sample = kutlog_sampler_sample(sampler, 0.25f, 0.5f);
+  sample = kutlog_sampler_sample(sampler, 0.25f, 0.5f, KUTLOG_PRECISE);
   ok &= check(sample.z > 0 && sample.pdf > 0, "a sample above the surface");
   ok &= check(kutlog_lobe_create(100, 0, 0.5, &lobe_of_k0, &error) == KUTLOG_INVALID_ARGUMENT &&
                   lobe_of_k0 == NULL && strstr(error.message, "k = 0") != NULL,

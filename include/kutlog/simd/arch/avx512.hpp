@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "kutlog/simd/arch/avx2.hpp"  // transpose_8x8
 #include "kutlog/simd/types.hpp"
 
 #if XSIMD_WITH_AVX512F
@@ -109,6 +110,18 @@ constexpr bool samples_by_polar_angle(avx512_tag) {
 template <class Arch>
 inline floats<Arch> coarse_coefficient(const float* row, ints<Arch> cell, avx512_tag) {
   return _mm512_permutex2var_ps(_mm512_loadu_ps(row), cell, _mm512_loadu_ps(row + 16));
+}
+
+// The sampler's rows, one per lane, for its deterministic mode (the others sample by the polar
+// angle): two 8x8 transposes, of lanes 0-7 and 8-15, joined.
+template <class Arch, class Row>
+inline std::array<floats<Arch>, 8> transpose_rows(const Row& row, avx512_tag) {
+  const std::array<__m256, 8> low = transpose_8x8(row),
+                              high = transpose_8x8([&](std::size_t i) { return row(8 + i); });
+  std::array<floats<Arch>, 8> c;
+  for (std::size_t j = 0; j < 8; ++j)
+    c[j] = _mm512_insertf32x8(_mm512_castps256_ps512(low[j]), high[j], 1);
+  return c;
 }
 
 }  // namespace kutlog::simd::ops
