@@ -30,6 +30,7 @@
 #include "kutlog/lobe.hpp"
 #include "kutlog/sampling.hpp"
 #include "kutlog/shade.hpp"
+#include "common/pathtrace.hpp"
 #include "lobe_accuracy.hpp"
 #include "recorded_data.hpp"
 
@@ -274,6 +275,24 @@ std::map<std::string, std::uint64_t> current_digests() {
       record("sampler n=" + testing::PrintToString(n) + " k=" + std::to_string(k) +
                  (use == LobeUse::phong ? " phong" : " microfacet"),
              sampler_outputs(sampler, arch), {}, &first);
+  }
+  // The path tracer's image (kutlog-pathtrace), rendered in the deterministic mode: its pixels'
+  // doubles as pairs of floats' bits.
+  const pathtrace::Material material(1000, 3, 0.5, kDeterministic);
+  const pathtrace::Environment sky = pathtrace::Environment::sky();
+  std::vector<float> first_image;
+  for (Arch arch : archs()) {
+    const inspect::ScopedArch forced(arch);
+    const pathtrace::Image image =
+        pathtrace::render({material, sky, 32, 24}, pathtrace::Sampler::lobe, 3, {4}, 1)[0];
+    std::vector<float> bits;
+    for (const pathtrace::Rgb& pixel : image.pixels)
+      for (double channel : {pixel.r, pixel.g, pixel.b}) {
+        const std::uint64_t word = std::bit_cast<std::uint64_t>(channel);
+        bits.push_back(std::bit_cast<float>(std::uint32_t(word)));
+        bits.push_back(std::bit_cast<float>(std::uint32_t(word >> 32)));
+      }
+    record("pathtrace image", bits, {}, &first_image);
   }
   const std::vector<float> t = digest_inputs(Lobe(100, 3, 0.5), 65521);
   std::vector<float> n(t.size());

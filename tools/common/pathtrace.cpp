@@ -41,7 +41,7 @@ struct Frame {
 // sampling resolves and uniform sampling finds once in 89 draws at best. Its radiance makes
 // it about four fifths of the light that reaches a surface facing it, as a clear day's sun is.
 const Vec3 kToSun = unit({-0.45, 0.55, 0.7});
-const double kSunCosRadius = std::cos(0.15);
+const double kSunCosRadius = 0x1.fa4033e5ee937p-1;  // cos(0.15), written out as libm's may vary
 constexpr Rgb kSun{100, 94, 80};
 constexpr Rgb kHorizon{0.85, 0.9, 1.0}, kZenith{0.2, 0.4, 0.9};
 constexpr Rgb kGroundLight{0.4, 0.33, 0.25}, kGroundDark{0.08, 0.07, 0.06};
@@ -49,7 +49,8 @@ constexpr double kGroundDepth = 1.0;  // below the camera; the checker's squares
 
 // The camera: a pinhole on +z looking at the unit sphere at the origin.
 constexpr double kCameraDistance = 3.5;
-const double kHalfFieldTangent = std::tan(19.0 * kPi / 180);  // 38 degrees vertically
+// tan(19 pi / 180): 38 degrees vertically, written out as libm's may vary
+const double kHalfFieldTangent = 0x1.60976af8c1612p-2;
 
 // A reproducible random stream per pixel: SplitMix64's finalizer mixes (seed, pixel) into
 // the seed of a std::mt19937_64.
@@ -97,7 +98,7 @@ std::string_view sampler_label(Sampler sampler) {
 std::optional<ref::DirectionSample> draw_direction(const Material& material, Sampler sampler,
                                                    const Vec3& wo, double u1, double u2) {
   if (sampler == Sampler::lobe) {
-    const SampledDirection wm = material.sampler().sample(float(u1), float(u2));
+    const SampledDirection wm = material.sampler().sample(float(u1), float(u2), material.variant());
     return material.brdf().reflect(wo, {{wm.x, wm.y, wm.z}, wm.pdf});
   }
   const double cos_theta = u1, sin_theta = std::sqrt(std::max(0.0, 1 - u1 * u1));
@@ -113,9 +114,19 @@ Rgb estimate_reflected(const Material& material, Sampler sampler,
   const Vec3 wo_local = frame.to_local(wo);
   const auto wi = draw_direction(material, sampler, wo_local, u1, u2);
   if (!wi || !(wi->pdf > 0)) return {};
-  const double weight = material.brdf().eval(wo_local, wi->direction) * wi->direction.z / wi->pdf;
+  const double weight = material.eval(wo_local, wi->direction) * wi->direction.z / wi->pdf;
   if (weight == 0) return {};  // the environment lookup would only be multiplied by 0
   return weight * environment.radiance(frame.to_world(wi->direction));
+}
+
+double Material::eval(const Vec3& wo, const Vec3& wi) const {
+  if (variant_ != Variant::deterministic) return brdf_.eval(wo, wi);
+  // The reference's D G / (4 cos(theta_i) cos(theta_o)), D by the lobe's deterministic eval.
+  if (!(wo.z > 0) || !(wi.z > 0)) return 0;
+  const Vec3 wm = unit({wo.x + wi.x, wo.y + wi.y, wo.z + wi.z});
+  const double D =
+      double(lobe_.eval(float(wm.z), Variant::deterministic, Normalization::exact_coef));
+  return D * ref::vcavity_shadowing(wm.z, wi.z, wo.z, ref::dot(wo, wm)) / (4 * wi.z * wo.z);
 }
 
 Image::Image(int width, int height)

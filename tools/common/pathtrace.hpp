@@ -53,18 +53,26 @@ class Environment {
   bool white_;
 };
 
-// The sphere's material: the reference BRDF and a LobeSampler of the same n, k, Q.
+// The sphere's material: the reference BRDF and a LobeSampler of the same n, k, Q. With
+// Variant::deterministic, the sampler's deterministic mode and D by Lobe::eval's: with the
+// rest in double IEEE operations compiled unfused, the image has the same bits on every CPU.
 class Material {
  public:
   // std::invalid_argument naming the parameter, as the reference's.
-  Material(double n, int k, double Q)
-      : brdf_(n, k, Q), sampler_(n, k, Q, LobeUse::microfacet) {}
+  Material(double n, int k, double Q, Variant variant = Variant::precise)
+      : brdf_(n, k, Q), sampler_(n, k, Q, LobeUse::microfacet), lobe_(n, k, Q),
+        variant_(variant) {}
   const ref::KutlogMicrofacet& brdf() const { return brdf_; }
   const LobeSampler& sampler() const { return sampler_; }
+  Variant variant() const { return variant_; }
+  // f(wo, wi) in the local frame: the reference's, or with D from the deterministic lobe.
+  double eval(const Vec3& wo, const Vec3& wi) const;
 
  private:
   ref::KutlogMicrofacet brdf_;
   LobeSampler sampler_;
+  Lobe lobe_;
+  Variant variant_;
 };
 
 // How the direction of each sample is drawn. kSamplers drives the tool's images, CSV columns
