@@ -108,6 +108,18 @@ std::string_view explanation(RatioKind kind) {
              "tracer draws one direction per bounce, against pbrt-v2's draw in scalar float\n"
              "(`std::pow`, `std::sqrt`, `std::cos`, `std::sin`), over 4096 pairs and over 2^18\n"
              "(whose order no branch predictor learns); the peer's column is then its scalar rate.\n";
+    case RatioKind::deterministic:
+      return "## The deterministic mode\n\n"
+             "`Variant::deterministic` (the same bits on every arch and call shape,\n"
+             "[accuracy](../accuracy.md#the-deterministic-mode)) against `Variant::precise` in each\n"
+             "call shape of the tables above, n = 1000: the lobe and the per-lane lobe over arrays\n"
+             "of 4096, `shade` from normals on 16x16 tiles, the sampler over arrays, and one\n"
+             "fragment or one sample per call (4096 inputs, the arch the dispatch chooses). It runs\n"
+             "the kernels fitted for unfused arithmetic, unfused on every arch: free where precise\n"
+             "runs them already (SSE4.1), the cost of the unfused multiply-adds with FMA, and of\n"
+             "the portable arch's lane in the one-call shapes. `peer`: the shape's strongest\n"
+             "pow-based peer of the tables above (the stream API has none but the lobe's own\n"
+             "array eval); `deterministic / pow_xsimd`: against `t^n` by `xsimd::pow`.\n";
   }
   return "";
 }

@@ -93,6 +93,9 @@ void register_fragment_benchmarks(const std::string& flags) {
         register_scalar_unary("fragment/scalar_kutlog_fast" + at,
                               [lobe](float t) { return lobe->eval(t, Variant::fast); }, cosines);
         if (!flags.empty()) continue;
+        register_scalar_unary(
+            "fragment/scalar_kutlog_deterministic" + at,
+            [lobe](float t) { return lobe->eval(t, Variant::deterministic); }, cosines);
         register_c_fragment_benchmarks(n, k, at, cosines);
         // A gloss map: each fragment's n log-uniform in [n / 2, 2 n], against powf at that n.
         const auto per_lane = std::make_shared<const PerLaneLobe>(n / 2.0, 2.0 * n, k, kLobeAnchor);

@@ -1,11 +1,13 @@
 // Benchmarks of the shading lobes, named with the tokens the ratio report reads:
 // lobe/<kernel>/n:<n>/k:<k>/arch:<arch>, kernel in kutlog_precise, kutlog_fast,
-// kutlog_perlane, kutlog_perlane_fast, pow_xsimd, pow_poly_precise, pow_poly_fast,
+// kutlog_deterministic, kutlog_perlane, kutlog_perlane_fast, kutlog_perlane_deterministic,
+// pow_xsimd, pow_poly_precise, pow_poly_fast,
 // pow_poly_perlane_precise, pow_poly_perlane_fast, pow_precise, schlick, copy; and
 // the spans of a renderer,
 // span/<kernel>/n:1000/k:<k>/count:<count>/arch:<arch> (kernel in kutlog_precise, kutlog_fast
 // and shade_cosines, the stream API's), and the stream API on 16x16 tiles,
-// shade/<form>/n:1000/k:<k>/count:256/arch:<arch>, form in cosines, directions.
+// shade/<form>/n:1000/k:<k>/count:256/arch:<arch>, form in cosines, directions,
+// directions_deterministic.
 #pragma once
 
 #include <benchmark/benchmark.h>
@@ -49,6 +51,17 @@ inline constexpr int kLobeExponents[] = {10, 100, 1000};
 inline constexpr int kLobePowers[] = {1, 3, 5};
 inline constexpr double kLobeAnchor = 0.5;
 inline constexpr std::size_t kSpanCounts[] = {1, 16, 157, 4096};
+inline constexpr Variant kBenchVariants[] = {Variant::precise, Variant::fast,
+                                             Variant::deterministic};
+
+// A kernel's name with its variant's suffix: kutlog_perlane, kutlog_perlane_fast,
+// kutlog_perlane_deterministic (with_precise: kutlog_precise ...).
+inline std::string variant_kernel(const std::string& kernel, Variant variant,
+                                  bool with_precise = false) {
+  if (variant == Variant::fast) return kernel + "_fast";
+  if (variant == Variant::deterministic) return kernel + "_deterministic";
+  return with_precise ? kernel + "_precise" : kernel;
+}
 
 // t = N.H over the lobe and around it: uniform in [0.9, 1] for n = 1000's narrow lobe would
 // flatter it, so t is uniform in angle over [0, 2 gran] of the lobe at hand.
@@ -110,8 +123,8 @@ inline void register_kutlog_lobes(Arch arch, int n, const LobeRegistrar& add) {
   for (int k : kLobePowers) {
     const std::string at_k = "/k:" + std::to_string(k);
     // Lobes are built inside the benchmarks (once per run), so registering costs nothing.
-    for (Variant variant : {Variant::precise, Variant::fast})
-      add(variant == Variant::precise ? "kutlog_precise" : "kutlog_fast", at_k,
+    for (Variant variant : kBenchVariants)
+      add(variant_kernel("kutlog", variant, true), at_k,
           [=](benchmark::State& state) {
             const Lobe lobe(n, k, kLobeAnchor);
             const std::vector<float> t = lobe_inputs(lobe);
@@ -119,8 +132,8 @@ inline void register_kutlog_lobes(Arch arch, int n, const LobeRegistrar& add) {
               lobe.eval(x, out, N, variant, Normalization::exact_coef);
             });
           });
-    for (Variant variant : {Variant::precise, Variant::fast})
-      add(variant == Variant::precise ? "kutlog_perlane" : "kutlog_perlane_fast", at_k,
+    for (Variant variant : kBenchVariants)
+      add(variant_kernel("kutlog_perlane", variant), at_k,
           [=](benchmark::State& state) {
             // A glossiness map around n: each lane's n log-uniform in [n/2, 2n].
             const PerLaneLobe lobe(std::max(k, n / 2), 2.0 * n, k, kLobeAnchor);
@@ -246,16 +259,21 @@ inline void register_tile_benchmarks(Arch arch) {
         shade(lobe, t + i, n_dot_l + i, out + i, 256, covered + i);
       });
     });
-    benchmark::RegisterBenchmark(("shade/directions" + at).c_str(), [=](benchmark::State& state) {
-      const std::vector<float> t = lobe_inputs(Lobe(1000, k, kLobeAnchor));
-      std::vector<float> nx(N), ny(N, 0.0f), nz(t);
-      for (std::size_t i = 0; i < N; ++i) nx[i] = std::sqrt(std::max(0.0f, 1 - t[i] * t[i]));
-      tiles(state, [&](const Lobe& lobe, const float*, const float*, const std::uint8_t* covered,
-                       float* out, std::size_t i) {
-        shade(lobe, Vectors{nx.data() + i, ny.data() + i, nz.data() + i}, Direction{0, 0, 1},
-              Direction{0, 0, 1}, out + i, 256, covered + i);
-      });
-    });
+    for (Variant variant : {Variant::precise, Variant::deterministic})
+      benchmark::RegisterBenchmark(
+          (variant_kernel("shade/directions", variant) + at).c_str(),
+          [=](benchmark::State& state) {
+            const std::vector<float> t = lobe_inputs(Lobe(1000, k, kLobeAnchor));
+            std::vector<float> nx(N), ny(N, 0.0f), nz(t);
+            for (std::size_t i = 0; i < N; ++i)
+              nx[i] = std::sqrt(std::max(0.0f, 1 - t[i] * t[i]));
+            tiles(state, [&](const Lobe& lobe, const float*, const float*,
+                             const std::uint8_t* covered, float* out, std::size_t i) {
+              shade(lobe, Vectors{nx.data() + i, ny.data() + i, nz.data() + i},
+                    Direction{0, 0, 1}, Direction{0, 0, 1}, out + i, 256, covered + i,
+                    {variant});
+            });
+          });
   }
 }
 

@@ -83,20 +83,22 @@ void register_scalar_benchmarks() {
     const std::string at = "/n:" + std::to_string(kSamplingExponent);
     const std::string inputs = fragment_inputs_token(count);
     for (int k : {1, 3, 5})
-      benchmark::RegisterBenchmark(
-          ("sample/sample_kutlog_scalar" + at + "/k:" + std::to_string(k) + inputs).c_str(),
-          [k, count](benchmark::State& state) {
-            const LobeSampler sampler(kSamplingExponent, k, kLobeAnchor, LobeUse::microfacet);
-            run_sampler(
-                state,
-                [&](const float* u1, const float* u2, DirectionSamples out) {
-                  for (std::size_t i = 0; i < count; ++i) {
-                    const SampledDirection d = sampler.sample(u1[i], u2[i]);
-                    out.x[i] = d.x, out.y[i] = d.y, out.z[i] = d.z, out.pdf[i] = d.pdf;
-                  }
-                },
-                count);
-          });
+      for (Variant variant : {Variant::precise, Variant::deterministic})
+        benchmark::RegisterBenchmark(
+            (variant_kernel("sample/sample_kutlog_scalar", variant) + at + "/k:" +
+             std::to_string(k) + inputs).c_str(),
+            [k, count, variant](benchmark::State& state) {
+              const LobeSampler sampler(kSamplingExponent, k, kLobeAnchor, LobeUse::microfacet);
+              run_sampler(
+                  state,
+                  [&](const float* u1, const float* u2, DirectionSamples out) {
+                    for (std::size_t i = 0; i < count; ++i) {
+                      const SampledDirection d = sampler.sample(u1[i], u2[i], variant);
+                      out.x[i] = d.x, out.y[i] = d.y, out.z[i] = d.z, out.pdf[i] = d.pdf;
+                    }
+                  },
+                  count);
+            });
     benchmark::RegisterBenchmark(
         ("sample/sample_blinn_pow_scalar" + at + inputs).c_str(),
         [count](benchmark::State& state) {

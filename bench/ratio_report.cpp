@@ -76,6 +76,7 @@ std::vector<RatioTable> RatioCollector::ratio_tables() const {
   add(RatioKind::span, span_ratios());
   add(RatioKind::tile, tile_ratios());
   add(RatioKind::sampling, sampling_ratios());
+  add(RatioKind::deterministic, deterministic_ratios());
   return tables;
 }
 
@@ -292,6 +293,56 @@ std::optional<tools::Table> RatioCollector::sampling_ratios() const {
                    millions(blinn),
                    fmt::format("{} / {} / {}", over_blinn(1), over_blinn(3), over_blinn(5))});
   }
+  return any ? std::optional(std::move(table)) : std::nullopt;
+}
+
+std::optional<tools::Table> RatioCollector::deterministic_ratios() const {
+  // Variant::deterministic against precise in each call shape at n = 1000, and against the
+  // shape's strongest peer (none for the stream API, whose peer is the lobe's own array eval).
+  tools::Table table({"call shape", "arch", "k", "precise (M/s)", "deterministic (M/s)",
+                      "deterministic / precise", "peer", "deterministic / peer",
+                      "deterministic / pow_xsimd"});
+  bool any = false;
+  struct Shape {
+    std::string name, precise, deterministic, suffix, peer, peer_name;  // rates' names
+    bool per_arch;
+  };
+  const std::vector<Shape> shapes = {
+      {"arrays (Lobe)", "lobe/kutlog_precise", "lobe/kutlog_deterministic", "", "lobe/pow_poly_precise",
+       "pow_poly_precise", true},
+      {"arrays (PerLaneLobe)", "lobe/kutlog_perlane", "lobe/kutlog_perlane_deterministic", "",
+       "lobe/pow_poly_perlane_precise", "pow_poly_perlane_precise", true},
+      {"shade, 16x16 tiles", "shade/directions", "shade/directions_deterministic", "/count:256",
+       "", "", true},
+      {"sampler arrays", "sample/sample_kutlog", "sample/sample_kutlog_deterministic", "",
+       "sample/sample_blinn_pow", "sample_blinn_pow", true},
+      {"one fragment per call", "fragment/scalar_kutlog", "fragment/scalar_kutlog_deterministic",
+       "", "fragment/scalar_powf", "powf", false},
+      {"one sample per call", "sample/sample_kutlog_scalar",
+       "sample/sample_kutlog_scalar_deterministic", "", "sample/sample_blinn_pow_scalar",
+       "pbrt-v2 draw", false}};
+  for (const Shape& shape : shapes)
+    for (const std::string& arch : shape.per_arch ? compiled_arch_names()
+                                                  : std::vector<std::string>{"dispatched"})
+      for (int k : {1, 3, 5}) {
+        const std::string tail = shape.per_arch ? "/arch:" + arch : "";
+        const std::string at = "/n:1000/k:" + std::to_string(k) + shape.suffix + tail;
+        const double precise = rate(shape.precise + at), deterministic = rate(shape.deterministic + at);
+        if (precise == 0 || deterministic == 0) continue;
+        any = true;
+        // The peers at n = 1000: one rate for every k (the fragment's powf per k).
+        const double peer = shape.peer.empty() ? 0
+                            : shape.peer.starts_with("fragment/")
+                                ? rate(shape.peer + at)
+                                : rate(shape.peer + "/n:1000" + tail);
+        const double pow_xsimd = shape.per_arch && shape.name.starts_with("arrays")
+                                     ? rate("lobe/pow_xsimd/n:1000" + tail)
+                                     : 0;
+        table.add_row({shape.name, arch, std::to_string(k), millions(precise),
+                       millions(deterministic), times(deterministic / precise), shape.peer_name,
+                       peer ? times(deterministic / peer) : "",
+                       pow_xsimd ? times(deterministic / pow_xsimd) : ""});
+      }
   return any ? std::optional(std::move(table)) : std::nullopt;
 }
 

@@ -16,7 +16,7 @@
 namespace kutlog::bench {
 
 // What a ratio table compares; the benchmark page explains each kind.
-enum class RatioKind { math, lobe, fragment, material, span, tile, sampling };
+enum class RatioKind { math, lobe, fragment, material, span, tile, sampling, deterministic };
 
 struct RatioTable {
   RatioKind kind;
@@ -44,7 +44,8 @@ class RatioCollector : public benchmark::BenchmarkReporter {
   // The ratio tables of the kernels measured in this run, each only if the run has something
   // for it: math kernels against xsimd and std, lobes against pow_xsimd at the same n and arch,
   // the per-fragment eval against powf and pow(double), spans against a 4096 array, tiles of
-  // the stream API against the array eval, the lobe sampler against pow-based Blinn sampling.
+  // the stream API against the array eval, the lobe sampler against pow-based Blinn sampling,
+  // the deterministic mode against precise in each call shape.
   std::vector<RatioTable> ratio_tables() const;
   // Prints them as markdown, or says that the run has no kernel together with its peer.
   void print_ratios(std::FILE* out) const;
@@ -59,6 +60,7 @@ class RatioCollector : public benchmark::BenchmarkReporter {
   std::optional<tools::Table> span_ratios() const;
   std::optional<tools::Table> tile_ratios() const;
   std::optional<tools::Table> sampling_ratios() const;
+  std::optional<tools::Table> deterministic_ratios() const;
 
   // Google Benchmark's one default display reporter: it keeps ownership (the same object for
   // every caller), so that two collectors cannot delete it twice.

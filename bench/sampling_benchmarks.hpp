@@ -65,15 +65,17 @@ void register_sampling_benchmarks(Arch arch) {
   const std::string at_n = "/n:" + std::to_string(kSamplingExponent);
   const std::string tail = "/arch:" + std::string(arch_name(arch));
   for (int k : {1, 3, 5})
-    benchmark::RegisterBenchmark(
-        ("sample/sample_kutlog" + at_n + "/k:" + std::to_string(k) + tail).c_str(),
-        [=](benchmark::State& state) {
-          const inspect::ScopedArch forced(arch);
-          const LobeSampler sampler(kSamplingExponent, k, kLobeAnchor, LobeUse::microfacet);
-          run_sampler(state, [&](const float* u1, const float* u2, DirectionSamples out) {
-            sampler.sample(u1, u2, out, kArrayLength);
+    for (Variant variant : {Variant::precise, Variant::deterministic})
+      benchmark::RegisterBenchmark(
+          (variant_kernel("sample/sample_kutlog", variant) + at_n + "/k:" + std::to_string(k) +
+           tail).c_str(),
+          [=](benchmark::State& state) {
+            const inspect::ScopedArch forced(arch);
+            const LobeSampler sampler(kSamplingExponent, k, kLobeAnchor, LobeUse::microfacet);
+            run_sampler(state, [&](const float* u1, const float* u2, DirectionSamples out) {
+              sampler.sample(u1, u2, out, kArrayLength, variant);
+            });
           });
-        });
   benchmark::RegisterBenchmark(
       ("sample/sample_kutlog" + at_n + "/k:3/count:1" + tail).c_str(),
       [=](benchmark::State& state) {

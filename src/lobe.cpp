@@ -287,18 +287,21 @@ std::optional<CertifiedKernel> fit_base_power(detail::LobeKernel kernel, Quotien
                                               double w_max, double scale, const Profiles& profiles,
                                               const Target& target, detail::Arithmetic arithmetic) {
   kernel.form = detail::LobeKernel::Form::base_power;
-  for (int degree = 1; degree <= detail::LobeKernel::kMaxDegree; ++degree) {
-    // A base off by e puts F off by about k e near t = 1: a fit far from the target is skipped.
-    if (series.converged() && series.truncation_error(degree) * w_max > target.abs_error) continue;
-    const std::optional<detail::QuotientFit> fit = series.fit(degree, 0);
-    if (!fit) break;
-    kernel.degree = degree;
-    kernel.q_d.fill(0);
-    kernel.q_f.fill(0);
-    // Unfused (the deterministic mode's), the coefficients rounded to float first: fits in the
-    // long double of x86-64 and of AArch64 differ near 2^-44 of a coefficient, in double's last
-    // bits, and round to the same float but where one lies that near a float's midpoint.
-    for (const bool in_float_precision : {arithmetic == detail::Arithmetic::unfused, false}) {
+  // Unfused (the deterministic mode's), every degree with the coefficients rounded to float
+  // first: fits in the long double of x86-64 and of AArch64 differ near 2^-44 of a coefficient,
+  // in double's last bits, and round to the same float but where one lies that near a float's
+  // midpoint. Then in double, if no degree certifies so.
+  for (const bool in_float_precision : {arithmetic == detail::Arithmetic::unfused, false}) {
+    for (int degree = 1; degree <= detail::LobeKernel::kMaxDegree; ++degree) {
+      // A base off by e puts F off by about k e near t = 1: a fit far from the target is
+      // skipped.
+      if (series.converged() && series.truncation_error(degree) * w_max > target.abs_error)
+        continue;
+      const std::optional<detail::QuotientFit> fit = series.fit(degree, 0);
+      if (!fit) break;
+      kernel.degree = degree;
+      kernel.q_d.fill(0);
+      kernel.q_f.fill(0);
       for (int i = 0; i <= degree; ++i) {
         kernel.q_f[i] = float(double(fit->monomials[i]));
         kernel.q_d[i] = in_float_precision ? double(kernel.q_f[i]) : double(fit->monomials[i]);
@@ -306,13 +309,14 @@ std::optional<CertifiedKernel> fit_base_power(detail::LobeKernel kernel, Quotien
       if (const auto certified =
               meets(kernel, arithmetic, *fit, scale, profiles, false, target, nullptr))
         return CertifiedKernel{kernel, *certified};
-      if (!in_float_precision) break;
+      // Once the fit's own error is negligible, a higher degree only adds roundings: in float
+      // (the scalar path's, or float coefficients) the try ends there (it fails for the precise
+      // variant, whose setup it would slow).
+      if ((kernel.scalar_in_float || in_float_precision) && series.converged() &&
+          series.truncation_error(degree) * w_max < 0x1p-8 * target.abs_error)
+        break;
     }
-    // In float, once the fit's own error is negligible, a higher degree only adds roundings:
-    // the try ends there (it fails for the precise variant, whose setup it would slow).
-    if (kernel.scalar_in_float && series.converged() &&
-        series.truncation_error(degree) * w_max < 0x1p-8 * target.abs_error)
-      break;
+    if (!in_float_precision) break;
   }
   return std::nullopt;
 }

@@ -26,6 +26,7 @@
 #include <cstring>
 #include <limits>
 #include <type_traits>
+#include <utility>
 
 #include <xsimd/config/xsimd_arch.hpp>
 #include <xsimd/types/xsimd_utils.hpp>
@@ -123,9 +124,10 @@ using kutlog::simd::portable_detail::vector_t;
 // ---- memory --------------------------------------------------------------------------------
 template <class A, class T>
 inline batch<T, A> broadcast(T value, requires_arch<kutlog_portable::portable>) noexcept {
-  kutlog_portable::vector_t<T> v;
-  for (std::size_t i = 0; i < batch<T, A>::size; ++i) v[i] = value;
-  return v;
+  // Every lane in one initializer: GCC makes it one shuffle, where lane by lane it inserted each.
+  return [value]<std::size_t... lane>(std::index_sequence<lane...>) {
+    return kutlog_portable::vector_t<T>{(static_cast<void>(lane), value)...};
+  }(std::make_index_sequence<batch<T, A>::size>());
 }
 template <class A, class T, class... Values>
 inline batch<T, A> set(batch<T, A> const&, requires_arch<kutlog_portable::portable>,
