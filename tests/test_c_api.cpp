@@ -319,6 +319,19 @@ TEST(CApi, NullHandlesGiveNaN) {
   const kutlog_sample sample = kutlog_sampler_sample(nullptr, 0.5f, 0.5f, KUTLOG_PRECISE);
   EXPECT_TRUE(std::isnan(sample.x) && std::isnan(sample.y) && std::isnan(sample.z) &&
               std::isnan(sample.pdf));
+  // A variant or normalization out of range, where the call returns a value: NaN too.
+  const LobeHandle lobe = make_lobe(100, 3, 0.5);
+  EXPECT_TRUE(std::isnan(kutlog_lobe_eval(lobe.get(), 0.5f, kutlog_variant(3),
+                                          KUTLOG_UNNORMALIZED)));
+  EXPECT_TRUE(std::isnan(kutlog_lobe_eval(lobe.get(), 0.5f, KUTLOG_DETERMINISTIC,
+                                          kutlog_normalization(2))));
+  EXPECT_FALSE(std::isnan(kutlog_lobe_eval(lobe.get(), 0.99f, KUTLOG_DETERMINISTIC,
+                                           KUTLOG_UNNORMALIZED)));
+  kutlog_sampler* sampler = nullptr;
+  ASSERT_EQ(kutlog_sampler_create(100, 3, 0.5, KUTLOG_USE_PHONG, &sampler, nullptr), KUTLOG_OK);
+  EXPECT_TRUE(std::isnan(kutlog_sampler_sample(sampler, 0.5f, 0.5f, kutlog_variant(-1)).pdf));
+  EXPECT_FALSE(std::isnan(kutlog_sampler_sample(sampler, 0.5f, 0.5f, KUTLOG_DETERMINISTIC).pdf));
+  kutlog_sampler_destroy(sampler);
   const kutlog_fragment zeroed{};
   EXPECT_TRUE(std::isnan(kutlog_eval(&zeroed, 0.5f)));
   const kutlog_fast_fragment zeroed_fast{};
