@@ -361,7 +361,7 @@ TEST_P(LobePerArch, PerLaneMaterialsWithinBoundsAndBetweenZeroAndPeak) {
   unsigned seed = 17;
   LargestErrors largest;
   for (const PerLaneCase& c : per_lane_materials(40, 2026))
-    for (Variant variant : {Variant::precise, Variant::fast})
+    for (Variant variant : tools::kLobeVariants)
       expect_per_lane_within_bounds(c, seed++, 8192, variant, evaluate_per_lane_array, &largest);
   largest.expect_bounds_reached();
 }
@@ -537,7 +537,7 @@ TEST_P(LobeExhaustive, PerLaneRandomMaterials) {
   unsigned seed = 1;
   LargestErrors largest;
   for (const PerLaneCase& c : per_lane_materials(kMaterials, 2027))
-    for (Variant variant : {Variant::precise, Variant::fast})
+    for (Variant variant : tools::kLobeVariants)
       expect_per_lane_within_bounds(c, seed++, lanes, variant, evaluate_per_lane_array, &largest);
   largest.expect_bounds_reached();
 }

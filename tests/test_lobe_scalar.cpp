@@ -43,7 +43,7 @@ TEST(LobeScalar, PerLaneMaterialsWithinBoundsAndBetweenZeroAndPeak) {
   // about half the arrays' (whose float roundings the measured bound is; test_lobe.cpp).
   unsigned seed = 17;
   for (const PerLaneCase& c : per_lane_materials(40, 2026))
-    for (Variant variant : {Variant::precise, Variant::fast})
+    for (Variant variant : tools::kLobeVariants)
       expect_per_lane_within_bounds(c, seed++, 8192, variant, evaluate_per_lane_scalar_here);
 }
 
