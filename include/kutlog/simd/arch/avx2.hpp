@@ -97,8 +97,7 @@ inline void store_partial(float* out, floats<Arch> value, std::size_t count, avx
 // Eight rows of 8 floats transposed: pairs of rows interleaved, then pairs of pairs, then the
 // halves. Coefficient j of the 8 rows in c[j].
 template <class Row>
-inline std::array<__m256, 8> transpose_8x8(const Row& row) {
-  std::array<__m256, 8> c;
+inline void transpose_8x8(const Row& row, __m256 (&c)[8]) {
   __m256 r[8], pairs[8], quads[8];
   for (std::size_t i = 0; i < 8; ++i) r[i] = _mm256_loadu_ps(row(i));
   for (std::size_t i = 0; i < 8; i += 2) {
@@ -115,14 +114,14 @@ inline std::array<__m256, 8> transpose_8x8(const Row& row) {
     c[j] = _mm256_permute2f128_ps(quads[j], quads[4 + j], 0x20);
     c[4 + j] = _mm256_permute2f128_ps(quads[j], quads[4 + j], 0x31);
   }
-  return c;
 }
 
 // The sampler's rows of 8 floats, one per lane, as an 8x8 transpose.
 template <class Arch, class Row>
 inline std::array<floats<Arch>, 8> transpose_rows(const Row& row, avx2_tag) {
   static_assert(floats<Arch>::size == 8, "an arch of 8 float lanes");
-  const std::array<__m256, 8> t = transpose_8x8(row);
+  __m256 t[8];
+  transpose_8x8(row, t);
   std::array<floats<Arch>, 8> c;
   for (std::size_t j = 0; j < 8; ++j) c[j] = t[j];
   return c;

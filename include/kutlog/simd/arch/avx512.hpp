@@ -116,8 +116,9 @@ inline floats<Arch> coarse_coefficient(const float* row, ints<Arch> cell, avx512
 // angle): two 8x8 transposes, of lanes 0-7 and 8-15, joined.
 template <class Arch, class Row>
 inline std::array<floats<Arch>, 8> transpose_rows(const Row& row, avx512_tag) {
-  const std::array<__m256, 8> low = transpose_8x8(row),
-                              high = transpose_8x8([&](std::size_t i) { return row(8 + i); });
+  __m256 low[8], high[8];
+  transpose_8x8(row, low);
+  transpose_8x8([&](std::size_t i) { return row(8 + i); }, high);
   std::array<floats<Arch>, 8> c;
   for (std::size_t j = 0; j < 8; ++j)
     c[j] = _mm512_insertf32x8(_mm512_castps256_ps512(low[j]), high[j], 1);
