@@ -138,15 +138,19 @@ std::vector<float> lobe_outputs(const Lobe& lobe, Normalization normalization,
   return out;
 }
 
-// Unit vectors from a 64-bit LCG (the same on every platform): x, y, z uniform in [-1, 1]
-// normalized in double, each rounded once.
+// A 64-bit LCG: the same stream on every platform, where the standard distributions are not.
+struct FixedStream {
+  std::uint64_t state;
+  std::uint64_t next() { return state = state * 6364136223846793005u + 1442695040888963407u; }
+};
+
+// Unit vectors from a FixedStream: x, y, z uniform in [-1, 1] normalized in double, each
+// rounded once.
 struct UnitVectors {
   std::vector<float> x, y, z;
   UnitVectors(std::size_t count, std::uint64_t seed, bool upper) {
-    const auto unit = [&] {
-      seed = seed * 6364136223846793005u + 1442695040888963407u;
-      return double(seed >> 11) * 0x1p-52 - 1.0;
-    };
+    FixedStream stream{seed};
+    const auto unit = [&] { return double(stream.next() >> 11) * 0x1p-52 - 1.0; };
     for (std::size_t i = 0; i < count; ++i) {
       const double a = unit(), b = unit(), c = upper ? std::fabs(unit()) + 0.05 : unit();
       const double length = std::sqrt(a * a + b * b + c * c);
@@ -206,11 +210,11 @@ std::vector<float> per_lane_outputs(const PerLaneLobe& lobe, const std::vector<f
 std::vector<float> sampler_outputs(const LobeSampler& sampler, Arch arch) {
   const inspect::ScopedArch forced(arch);
   std::vector<float> u1, u2;
-  std::uint64_t seed = 77;
+  FixedStream stream{77};
   for (int i = 0; i < 1 << 18; ++i) {
-    seed = seed * 6364136223846793005u + 1442695040888963407u;
-    u1.push_back(float(seed >> 40) * 0x1p-24f);
-    u2.push_back(float((seed >> 16) & 0xffffffu) * 0x1p-24f);
+    const std::uint64_t bits = stream.next();
+    u1.push_back(float(bits >> 40) * 0x1p-24f);
+    u2.push_back(float((bits >> 16) & 0xffffffu) * 0x1p-24f);
   }
   constexpr float inf = std::numeric_limits<float>::infinity();
   for (float special : {0.0f, -0.0f, 0x1p-149f, 0x1p-60f, 0.5f, 0x1.fffffep-1f, 1.0f, 2.0f, -1.0f,
@@ -251,11 +255,8 @@ void push_bits(std::vector<float>& values, double value) {
 constexpr std::pair<int, Normalization> kKernelsRoundingApart[] = {{237, Normalization::exact_coef}};
 std::vector<float> kernels_of_random_lobes() {
   std::vector<float> fields;
-  std::uint64_t seed = 2026;
-  const auto next = [&] {
-    seed = seed * 6364136223846793005u + 1442695040888963407u;
-    return seed >> 11;
-  };
+  FixedStream stream{2026};
+  const auto next = [&] { return stream.next() >> 11; };
   for (int i = 0; i < 400; ++i) {
     // One draw per statement: the order of a call's arguments differs by platform.
     const double mantissa = 1.0 + double(next() & 0xfffff) * 0x1p-20;

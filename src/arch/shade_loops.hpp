@@ -59,7 +59,7 @@ inline floats_of<Arch> lobe_cosine(const ShadeOptions& options, const simd::Vect
 }
 
 // Each form below runs its cosines fused where the arch has FMA, or unfused in the
-// deterministic mode: one instance of each (shade_forms).
+// deterministic mode: one instance of each kMayFuse, picked by the table's entries further on.
 template <class Arch, bool kMayFuse>
 void shade_vectors_as(const LobeKernel& kernel, const ShadeOptions& options, Vectors normal,
                       Vectors to_light, Vectors to_viewer, float* out, std::size_t count,
