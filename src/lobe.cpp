@@ -62,39 +62,29 @@ class QuotientSeries {
     // a few ulps each): the series has then converged, and what interpolation aliased is
     // below them. Else no degree is certain.
     for (int nodes = 32; nodes <= 128 && !converged_; nodes *= 2) {
-      chebyshev_ = detail::chebyshev_coefficients(q, 0, w_max, nodes);
-      Real total = 0, last = 0;
-      for (int j = 0; j < nodes; ++j) total += std::fabs(chebyshev_[j]);
-      for (int j = nodes - 4; j < nodes; ++j) last += std::fabs(chebyshev_[j]);
-      converged_ = last <= 0x1p-44L * total;
-      // The interpolant's error from the double values at the nodes (a few ulps each, times
-      // the Lebesgue constant), and from the terms past the last, which the decay bounds.
-      floor_ = double(0x1p-45L * total + 4 * last);
+      series_ = detail::chebyshev_interpolant(q, 0, w_max, nodes);
+      converged_ = series_.converged(kValueNoise * 2);
     }
-    // Each degree's truncation error, asked for many times: the sum of the dropped terms.
-    truncation_errors_.resize(chebyshev_.size());
-    Real tail = 0;
-    for (std::size_t degree = chebyshev_.size(); degree-- > 0;) {
-      truncation_errors_[degree] = double(tail) + floor_;
-      tail += std::fabs(chebyshev_[degree]);
-    }
+    // Each degree's truncation error, asked for many times.
+    for (int degree = 0; degree < int(series_.coefficients.size()); ++degree)
+      truncation_errors_.push_back(series_.truncation_error(degree, kValueNoise));
   }
 
   // The fit of this degree about w_center with its bound, if the series converged.
   std::optional<detail::QuotientFit> fit(int degree, double w_center) {
-    if (!converged_ || degree >= int(chebyshev_.size())) return std::nullopt;
+    if (!converged_ || degree >= int(series_.coefficients.size())) return std::nullopt;
     auto cached = std::find_if(monomials_.begin(), monomials_.end(), [&](const Monomials& m) {
       return m.degree == degree && m.w_center == w_center;
     });
     if (cached == monomials_.end())
-      cached = monomials_.insert(
-          monomials_.end(),
-          {degree, w_center,
-           detail::monomials_from_chebyshev(chebyshev_, degree, 0, w_max_, w_center)});
+      cached = monomials_.insert(monomials_.end(),
+                                 {degree, w_center, series_.monomials(degree, w_center)});
     return detail::QuotientFit{cached->monomials, truncation_error(degree)};
   }
   double truncation_error(int degree) const {
-    return std::size_t(degree) < truncation_errors_.size() ? truncation_errors_[degree] : floor_;
+    return std::size_t(degree) < truncation_errors_.size()
+               ? truncation_errors_[std::size_t(degree)]
+               : series_.truncation_error(degree, kValueNoise);
   }
   bool converged() const { return converged_; }
   // The fit of the lowest degree whose truncation is below 2^-40 of the peak (w_max q), or of
@@ -102,23 +92,25 @@ class QuotientSeries {
   std::optional<detail::QuotientFit> reference_fit(double w_center) {
     if (!converged_) return std::nullopt;
     int degree = 1;
-    while (degree + 1 < int(chebyshev_.size()) && truncation_error(degree) * w_max_ > 0x1p-40)
+    while (degree + 1 < int(series_.coefficients.size()) &&
+           truncation_error(degree) * w_max_ > 0x1p-40)
       ++degree;
     return fit(degree, w_center);
   }
 
  private:
+  // The relative noise of q's values (doubles), times the interpolant's Lebesgue constant.
+  static constexpr Real kValueNoise = 0x1p-45L;
   struct Monomials {
     int degree;
     double w_center;
     std::vector<Real> monomials;
   };
   double w_max_;
-  std::vector<Real> chebyshev_;
+  detail::ChebyshevSeries series_;
   std::vector<Monomials> monomials_;
   std::vector<double> truncation_errors_;  // by degree
   bool converged_ = false;
-  double floor_ = 0;
 };
 
 // Multiplications of B^k by squaring (k = 5: B^2, B^4, B^4 B).

@@ -54,6 +54,18 @@ std::vector<Real> lobatto_coefficients(const std::vector<Real>& values) {
   return coefficients;
 }
 
+// The sums of every |a_j| and of the last four.
+struct TermSums {
+  Real total = 0, last = 0;
+};
+TermSums term_sums(const std::vector<Real>& coefficients) {
+  const int size = int(coefficients.size());
+  TermSums sums;
+  for (int j = 0; j < size; ++j) sums.total += std::fabs(coefficients[j]);
+  for (int j = std::max(size - 4, 0); j < size; ++j) sums.last += std::fabs(coefficients[j]);
+  return sums;
+}
+
 // Clenshaw's recurrence: b_j = a_j + 2 u b_(j+1) - b_(j+2), the sum a_0 + u b_1 - b_2.
 Real clenshaw(const std::vector<Real>& coefficients, Real u) {
   Real b1 = 0, b2 = 0;
@@ -89,8 +101,8 @@ bool meets(const FloatFit& fit, const std::vector<double>& grid, const std::vect
 
 }  // namespace
 
-std::vector<Real> chebyshev_coefficients(const std::function<Real(Real)>& g, Real lo, Real hi,
-                                         int nodes) {
+ChebyshevSeries chebyshev_interpolant(const std::function<Real(Real)>& g, Real lo, Real hi,
+                                      int nodes) {
   const std::vector<Real>& cosines = quarter_cosines(nodes);
   std::vector<Real> values(nodes), chebyshev(nodes, 0);
   for (int i = 0; i < nodes; ++i) values[i] = g(lo + (hi - lo) * (1 + cosines[2 * i + 1]) / 2);
@@ -109,11 +121,11 @@ std::vector<Real> chebyshev_coefficients(const std::function<Real(Real)>& g, Rea
     for (int i = 0; i < pairs; ++i) sum += paired[i] * cosines[j * (2 * i + 1) % (4 * nodes)];
     chebyshev[j] = sum * (j == 0 ? 1.0L : 2.0L) / nodes;
   }
-  return chebyshev;
+  return {lo, hi, std::move(chebyshev)};
 }
 
-std::vector<Real> monomials_from_chebyshev(const std::vector<Real>& chebyshev, int degree,
-                                           Real lo, Real hi, Real center) {
+std::vector<Real> ChebyshevSeries::monomials(int degree, Real center) const {
+  const std::vector<Real>& chebyshev = coefficients;
   const int terms = degree + 1;
   // sum_j a_j T_j(u) as monomials in u, with T_{j+1} = 2 u T_j - T_{j-1}.
   std::vector<Real> in_u(terms, 0), t_previous(terms, 0), t_current(terms, 0), t_next(terms);
@@ -170,8 +182,16 @@ std::vector<double> ChebyshevSeries::values_at(const std::vector<double>& x) con
   return values;
 }
 
-std::vector<Real> ChebyshevSeries::monomials(int degree, Real center) const {
-  return monomials_from_chebyshev(coefficients, degree, lo, hi, center);
+double ChebyshevSeries::truncation_error(int degree, Real value_noise) const {
+  const TermSums sums = term_sums(coefficients);
+  Real dropped = 0;
+  for (int j = int(coefficients.size()) - 1; j > degree; --j) dropped += std::fabs(coefficients[j]);
+  return double(dropped) + double(value_noise * sums.total + 4 * sums.last);
+}
+
+bool ChebyshevSeries::converged(Real value_noise) const {
+  const TermSums sums = term_sums(coefficients);
+  return sums.last <= value_noise * sums.total;
 }
 
 ChebyshevSeries chebyshev_series(const std::function<Real(Real)>& g, Real lo, Real hi,
@@ -238,14 +258,15 @@ std::optional<FloatFit> fit_float(const std::function<Real(Real)>& g, double lo,
     if (meets(fit, grid, exact, center, allowed)) return fit;
     fit.slope = slope;
   }
-  for (fit.degree = 1; fit.degree <= max_degree; ++fit.degree) {
-    std::vector<Real> q = series.monomials(fit.degree, center);
+  const auto accepts = [&](std::vector<Real>& q) {
+    fit.degree = int(q.size()) - 1;
     q[0] -= Real(slope) * Real(center);
     q[1] -= Real(slope);
     for (int i = 0; i <= fit.degree; ++i) fit.coefficients[i] = float(q[i]);
-    if (meets(fit, grid, exact, center, allowed)) return fit;
-  }
-  return std::nullopt;
+    return meets(fit, grid, exact, center, allowed);
+  };
+  if (!detail::lowest_accepted_degree(series, max_degree, center, accepts)) return std::nullopt;
+  return fit;
 }
 
 }  // namespace kutlog::detail

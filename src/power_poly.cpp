@@ -27,19 +27,18 @@ using detail::Real;
 std::vector<Real> fit(const std::function<Real(Real)>& g, Real lo, Real hi,
                       const std::function<Real(Real, Real)>& error, double allowed,
                       int max_degree) {
-  const detail::ChebyshevSeries series = detail::chebyshev_series(g, lo, hi, 0x1p-56, 64);
-  for (int degree = 1; degree <= max_degree; ++degree) {
-    const std::vector<Real> p = series.monomials(degree, 0);
-    bool within = true;
-    for (int j = 0; j <= 4096 && within; ++j) {
+  const auto within = [&](const std::vector<Real>& p) {
+    for (int j = 0; j <= 4096; ++j) {
       const Real x = lo + (hi - lo) * j / 4096;
       Real value = 0;
       for (std::size_t i = p.size(); i-- > 0;) value = value * x + p[i];
-      within = error(value, x) <= Real(allowed);
+      if (!(error(value, x) <= Real(allowed))) return false;
     }
-    if (within) return p;
-  }
-  return {};
+    return true;
+  };
+  return detail::lowest_accepted_degree(detail::chebyshev_series(g, lo, hi, 0x1p-56, 64),
+                                        max_degree, 0, within)
+      .value_or(std::vector<Real>{});
 }
 
 // The largest float at or below the t where t^n = bound / 2: below it, 0 is within the bound.

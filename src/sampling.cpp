@@ -82,13 +82,13 @@ struct Storage {
 struct Fit {
   int degree;
   double error;  // the largest |fit - value_at| / scale at the check points
-  std::vector<std::vector<Real>> series;  // each cell's Chebyshev series in 2x, by cell index
+  std::vector<detail::ChebyshevSeries> series;  // each cell's, in 2x, by cell index
 
   // theta by the full series (in long double) of the cell of `layout` holding the argument.
   double theta(detail::SamplerCells layout, bool lower, double argument) const {
     const auto [cell, position] = layout.position(lower, argument);
     const Real x = position;
-    const std::vector<Real>& a = series[cell];
+    const std::vector<Real>& a = series[cell].coefficients;
     Real previous = 1, current = 2 * x, sum = a[0] + a[1] * current;
     for (std::size_t j = 2; j < a.size(); ++j) {
       const Real next = 4 * x * current - previous;
@@ -125,24 +125,23 @@ Fit fit_cells(const ValueAt& value_at, double scale, Weight weight, detail::Samp
     return weight_at(weight, cell.lower, cell.argument(x));
   };
   const std::vector<Cell> all = cells_of(layout);
-  Fit fit{1, 0, std::vector<std::vector<Real>>(layout.count())};
+  Fit fit{1, 0, std::vector<detail::ChebyshevSeries>(layout.count())};
   for (const Cell& cell : all) {
-    std::vector<Real>& series = fit.series[cell.index];
-    series = detail::chebyshev_coefficients(
+    detail::ChebyshevSeries& series = fit.series[cell.index];
+    series = detail::chebyshev_interpolant(
         [&](Real x) { return Real(value_of(cell, double(x)) / weight_of(cell, double(x))); },
         -0.5, 0.5, max_degree + 1);
     double tail = 0;
     int needed = max_degree;
     for (int j = max_degree; j > 0; --j) {
-      tail += double(std::fabs(series[j])) * weight_of(cell, 0.5);
+      tail += double(std::fabs(series.coefficients[j])) * weight_of(cell, 0.5);
       if (tail > kFitTolerance * scale) break;
       needed = j - 1;
     }
     fit.degree = std::max(fit.degree, needed);
   }
   for (const Cell& cell : all) {
-    const std::vector<Real> monomials =
-        detail::monomials_from_chebyshev(fit.series[cell.index], fit.degree, -0.5, 0.5, 0);
+    const std::vector<Real> monomials = fit.series[cell.index].monomials(fit.degree, 0);
     for (int j = 0; j <= max_degree; ++j)
       *storage.at(cell.index, j) = j <= fit.degree ? float(monomials[j]) : 0.0f;
     for (int m = 0; m < kCheckPoints; ++m) {

@@ -17,7 +17,7 @@ namespace {
 // the last four (times 4) what the interpolation aliased, as F's terms decay geometrically.
 constexpr int kNodes = 10;
 // The values at the nodes are doubles, a few ulps each: a floor under every bound.
-constexpr double kValueNoise = 0x1p-50;
+constexpr Real kValueNoise = 0x1p-50L;
 
 // Piece 0 is expanded about its start, where t = 1 gives u = 0 and the output scale_f exactly;
 // the others about their middle, where |u| <= 1/2 shrinks Horner's error.
@@ -118,19 +118,6 @@ Type x_of(float t, Type pieces_per_w) {
   return (Type(1) - Type(std::min(t, 1.0f))) * pieces_per_w;
 }
 
-// The truncation of a piece's interpolant to a degree: its dropped terms, and what the
-// interpolation aliased (the last four, times 4), over a floor for the values' own noise.
-double truncation_error(const std::vector<Real>& chebyshev, int degree) {
-  double truncation = 0, last = 0, total = 0;
-  for (int j = 0; j < kNodes; ++j) {
-    const double term = double(std::fabs(chebyshev[std::size_t(j)]));
-    total += term;
-    if (j > degree) truncation += term;
-    if (j >= kNodes - 4) last += term;
-  }
-  return truncation + (4 * last + kValueNoise * total);
-}
-
 }  // namespace
 
 double ScalarPiecesFitter::value(double w) const {
@@ -143,8 +130,8 @@ const ScalarPiecesFitter::Cut& ScalarPiecesFitter::cut(int pieces, std::size_t d
   if (existing == cuts_.end()) existing = cuts_.insert(cuts_.end(), new_cut(pieces));
   std::vector<std::vector<Real>>& monomials = existing->monomials[degree];
   for (int i = int(monomials.size()); i < pieces; ++i)
-    monomials.push_back(monomials_from_chebyshev(existing->chebyshev[std::size_t(i)],
-                                                 int(degree), 0, 1, local_center(i)));
+    monomials.push_back(
+        existing->series[std::size_t(i)].monomials(int(degree), local_center(i)));
   return *existing;
 }
 
@@ -153,7 +140,7 @@ ScalarPiecesFitter::Cut ScalarPiecesFitter::new_cut(int pieces) const {
   cut.pieces = pieces;
   cut.pieces_per_w = pieces / (1.0 - double(t_cut_));
   for (int i = 0; i < pieces; ++i)
-    cut.chebyshev.push_back(chebyshev_coefficients(
+    cut.series.push_back(chebyshev_interpolant(
         [&](Real f) { return Real(value(double((i + f) / cut.pieces_per_w))); }, 0, 1, kNodes));
   for (int i = 0; i <= pieces; ++i) cut.ends.push_back(value(i / cut.pieces_per_w));
   return cut;
@@ -182,7 +169,7 @@ std::optional<double> ScalarPiecesFitter::certify_piece(const Cut& cut, int i, d
   Range range;
   const std::optional<double> moved = p.prove_range(inputs.ceiling, i == 0, range);
   if (!moved) return std::nullopt;
-  const PieceBudget budget{scale * truncation_error(cut.chebyshev[std::size_t(i)], int(kDegree)),
+  const PieceBudget budget{scale * cut.series[std::size_t(i)].truncation_error(int(kDegree), kValueNoise),
                            coefficients, *moved, p.horner(), p.slope() * inputs.x_error};
   for (std::size_t j = 0; j <= kDegree; ++j) piece.polynomial[j] = Type(p.c[j]);
   piece.center = Type(i + local_center(i));

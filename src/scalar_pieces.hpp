@@ -46,7 +46,7 @@ class ScalarPiecesFitter {
   struct Cut {
     int pieces;
     double pieces_per_w;                        // exact, rounded by each table to its type
-    std::vector<std::vector<Real>> chebyshev;   // F on each piece, f = x - piece in [0, 1]
+    std::vector<ChebyshevSeries> series;        // F on each piece, f = x - piece in [0, 1]
     std::vector<double> ends;                   // F at w = i / pieces_per_w, i <= pieces
     // Each piece's truncation to a degree as monomials, by degree, when first asked for (both
     // normalizations scale the same ones).
