@@ -20,6 +20,7 @@
 #include "arch/kernel_table.hpp"
 #include "cpu_features.hpp"
 #include "epicenter_check.hpp"
+#include "fixed_math.hpp"
 #include "lobe_bound.hpp"
 #include "lobe_cut.hpp"
 #include "lobe_setup_hook.hpp"
@@ -29,6 +30,7 @@
 
 namespace kutlog {
 using detail::Real;
+namespace fixed = detail::fixed;
 
 #if defined(__ELF__)
 // Weak: the array path links it (src/dispatch.cpp), and only then are a Lobe's fused kernels
@@ -173,9 +175,9 @@ void drop_clamp_if_proven(detail::LobeKernel& kernel, detail::CertifiedError& ce
       float(double(kernel.scale_f) + double(kernel.scale_lo)) != kernel.scale_f ||
       zero_limit * (1 + 0x1p-16) > target.abs_error)
     return;
-  const double angle = std::acos(std::pow(zero_limit, 1.0 / shape.k)) / shape.c;  // F = limit
+  const double angle = fixed::acos(fixed::pow(zero_limit, 1.0 / shape.k)) / shape.c;  // F = limit
   if (angle < kPi / 2) {
-    const double half_sine = std::sin(0.5 * angle);
+    const double half_sine = fixed::sin(0.5 * angle);
     const float t_zero = detail::float_at_or_below_cut(1 - 2 * half_sine * half_sine);
     kernel.t_cut = std::max(kernel.t_cut, t_zero);
     certified.abs_error = std::max(certified.abs_error, zero_limit * (1 + 0x1p-16));
@@ -422,10 +424,10 @@ Lobe::Lobe(double n, int k, double Q) : n_(n), Q_(Q), k_(k) {
     throw_coef_overflow(n, k, Q, coef_exact_);
   detail::require_runnable_arch();
   const double limit = reference.integration_limit();
-  const double half_sine = std::sin(0.5 * limit);
+  const double half_sine = fixed::sin(0.5 * limit);
   const double w_max = 2 * half_sine * half_sine;  // 1 - cos(min(gran, pi/2))
   // F = 0 for t <= cos(gran), and below the horizon (t <= 0) when gran > pi/2.
-  t_cut_ = detail::float_at_or_below_cut(cutoff_angle_ >= kPi / 2 ? 0.0 : std::cos(cutoff_angle_));
+  t_cut_ = detail::float_at_or_below_cut(cutoff_angle_ >= kPi / 2 ? 0.0 : fixed::cos(cutoff_angle_));
   const detail::LobeShape shape{c_, k_};
   const detail::LobeProfile profile = detail::lobe_profile(shape, w_max);
   std::optional<detail::LobeProfile> fine;

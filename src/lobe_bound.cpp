@@ -224,17 +224,17 @@ LobeProfile lobe_profile(const LobeShape& shape, double w_max, int pieces) {
   // Half the pieces on the epicenter, which ends at a piece's end: its ulp bound is tighter.
   // Past pi/2 (wide lobes, c < 1) the whole support is epicenter: sin^2 must not wrap around.
   const double x_epicenter =
-      std::min(std::acos(std::pow(kEpicenter, 1.0 / shape.k)) / shape.c, std::numbers::pi / 2);
+      std::min(fixed::acos(fixed::pow(kEpicenter, 1.0 / shape.k)) / shape.c, std::numbers::pi / 2);
   // Rounded up: every t where F >= 0.6 is inside.
   const double w_epicenter =
-      std::min(w_max, 2 * std::pow(std::sin(0.5 * x_epicenter), 2) * (1 + 0x1p-40));
+      std::min(w_max, 2 * fixed::pow(fixed::sin(0.5 * x_epicenter), 2) * (1 + 0x1p-40));
   LobeProfile profile;
   profile.w_epicenter = w_epicenter;
   const auto add = [&](double w) {
     const double base = std::max(0.0, shape.base(w));
     profile.w.push_back(w);
     profile.base.push_back(base);
-    profile.value.push_back(std::pow(base, shape.k));
+    profile.value.push_back(fixed::pow(base, shape.k));
   };
   for (int j = 0; j < pieces / 2; ++j) add(w_epicenter * j / (pieces / 2));
   for (int j = 0; j <= pieces / 2; ++j) add(w_epicenter + (w_max - w_epicenter) * j / (pieces / 2));

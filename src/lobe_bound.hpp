@@ -28,6 +28,7 @@
 
 #include "kutlog/detail/float_ulp.hpp"
 #include "kutlog/lobe.hpp"
+#include "fixed_math.hpp"
 #include "polynomial_fit.hpp"
 
 namespace kutlog::detail {
@@ -37,11 +38,11 @@ namespace kutlog::detail {
 struct LobeShape {
   double c;
   int k;
-  double theta(double w) const { return 2 * std::asin(std::sqrt(0.5 * w)); }
-  double base(double w) const { return std::cos(c * theta(w)); }
+  double theta(double w) const { return 2 * fixed::asin(std::sqrt(0.5 * w)); }
+  double base(double w) const { return fixed::cos(c * theta(w)); }
   double one_minus_power(double w, int power) const {
-    const double half_sine = std::sin(0.5 * c * theta(w));
-    return -std::expm1(power * std::log1p(-2 * half_sine * half_sine));
+    const double half_sine = fixed::sin(0.5 * c * theta(w));
+    return -fixed::expm1(power * fixed::log1p(-2 * half_sine * half_sine));
   }
 };
 

@@ -13,6 +13,7 @@
 #include "kutlog/lobe.hpp"
 #include "kutlog/reference.hpp"
 #include "cpu_features.hpp"
+#include "fixed_math.hpp"
 #include "polynomial_fit.hpp"
 
 namespace kutlog {
@@ -45,7 +46,7 @@ FloatFit fit_base(double target, int degree) {
   std::optional<FloatFit> r = fit_float(
       [](Real v) {
         if (v < 1e-30L) return Real(0.5);
-        const Real half_sine = std::sin(std::sqrt(v) / 2);
+        const Real half_sine = detail::fixed::sin(double(std::sqrt(v) / 2));
         return 2 * half_sine * half_sine / v;
       },
       0, double(kVCut), 0, target);
@@ -101,7 +102,7 @@ void fit_c_squared_line(detail::PerLaneKernel& kernel, const LaneRange& range, V
   bool meets_target = true;
   for (int j = 0; j <= kGridIntervals && meets_target; ++j)
     for (double n : {n_min + (n_max - n_min) * j / kGridIntervals,
-                     n_min * std::pow(n_max / n_min, double(j) / kGridIntervals)}) {
+                     n_min * detail::fixed::pow(n_max / n_min, double(j) / kGridIntervals)}) {
       const double x = double(std::clamp(float(n), float(n_min), float(n_max)));
       const double theta_n = ref::acos_of_root(range.Q, x);
       const double exact = theta_k * theta_k / (theta_n * theta_n);
@@ -161,7 +162,7 @@ void fit_angle(detail::PerLaneKernel& kernel, const LaneRange& range, double w_m
   const FloatFit g = range.fit_or_refuse("acos(t)^2 / (1 - t)", fit_float(
       [](Real w) {
         if (w < 1e-30L) return Real(2);
-        const Real theta = 2 * std::asin(std::sqrt(w / 2));
+        const Real theta = 2 * detail::fixed::asin(double(std::sqrt(w / 2)));
         return theta * theta / w;
       },
       0, w_max, 0, range.target));
@@ -200,7 +201,7 @@ detail::PerLaneKernel fit_kernel(double n_min, double n_max, int k, double Q, Va
   // every lane's v passes (pi/2)^2. G is fitted up to w_max and w clamped 2^-10 past it, so
   // far that neither v's rounding nor G's drift there brings v back below v_cut.
   const ref::KutlogLobe widest(n_min, k, Q);
-  const double w_max = std::max(1 - std::cos(widest.cutoff_angle()), 1e-6);
+  const double w_max = std::max(1 - detail::fixed::cos(widest.cutoff_angle()), 1e-6);
   kernel.w_limit = float(w_max * (1 + 0x1p-10));
   kernel.y_center = float(0.5 * (range.y_lo() + range.y_hi()));
   fit_c_squared(kernel, range, variant);

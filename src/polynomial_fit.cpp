@@ -4,7 +4,8 @@
 #include <array>
 #include <cmath>
 #include <map>
-#include <numbers>
+
+#include "fixed_math.hpp"
 
 namespace kutlog::detail {
 namespace {
@@ -18,7 +19,7 @@ const std::vector<Real>& quarter_cosines(int nodes) {
   const auto [at, inserted] = by_nodes.try_emplace(nodes, 4 * nodes);
   if (inserted)
     for (int m = 0; m < 4 * nodes; ++m)
-      at->second[m] = std::cos(std::numbers::pi_v<Real> * m / (2 * nodes));
+      at->second[m] = fixed::cos_pi_times(m, 2 * nodes);
   return at->second;
 }
 
@@ -30,7 +31,7 @@ Real cos_pi_times(int m, int denominator) {
   static const std::array<Real, kResolution / 2 + 1> quarter_wave = [] {
     std::array<Real, kResolution / 2 + 1> table;
     for (int entry = 0; entry <= kResolution / 2; ++entry)
-      table[entry] = std::cos(std::numbers::pi_v<Real> * entry / kResolution);
+      table[entry] = fixed::cos_pi_times(entry, kResolution);
     return table;
   }();
   int r = m * (kResolution / denominator) % (2 * kResolution);

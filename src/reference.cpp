@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "fixed_math.hpp"
 #include "kutlog/detail/integer_power.hpp"
 
 namespace kutlog::ref {
@@ -90,8 +91,8 @@ double phong_cosine(const Vec3& normal, const Vec3& to_light, const Vec3& to_vie
 }
 
 double acos_of_root(double Q, double m) {
-  const double one_minus_root = -std::expm1(std::log(Q) / m);
-  return 2 * std::asin(std::sqrt(0.5 * one_minus_root));
+  const double one_minus_root = -detail::fixed::expm1(detail::fixed::log(Q) / m);
+  return 2 * detail::fixed::asin(std::sqrt(0.5 * one_minus_root));
 }
 
 KutlogLobe::KutlogLobe(double n, int k, double Q) : n_(n), k_(k), Q_(Q) {
@@ -103,16 +104,16 @@ KutlogLobe::KutlogLobe(double n, int k, double Q) : n_(n), k_(k), Q_(Q) {
 
 double KutlogLobe::integration_limit() const { return std::min(cutoff_angle_, pi / 2); }
 
-double KutlogLobe::lobe_above_horizon(double x) const {
+double KutlogLobe::lobe_above_horizon(double x, double (*cos)(double)) const {
   if (x >= cutoff_angle_) return 0;
-  const double scaled_cos = std::cos(c_ * x);
+  const double scaled_cos = cos(c_ * x);
   return scaled_cos > 0 ? detail::integer_power(scaled_cos, k_) : 0;
 }
 
 double KutlogLobe::eval_angle(double x) const {
   if (std::isnan(x)) return x;
   x = std::fabs(x);
-  return x >= pi / 2 ? 0 : lobe_above_horizon(x);
+  return x >= pi / 2 ? 0 : lobe_above_horizon(x, detail::fixed::cos);
 }
 
 double KutlogLobe::eval(double t) const {
@@ -120,7 +121,9 @@ double KutlogLobe::eval(double t) const {
   // rounds to pi/2 in double.
   double decided;
   if (apply_data_rule(t, decided)) return decided;
-  return lobe_above_horizon(std::acos(t));
+  // libm's acos and cos: the sweeps call this for every float, and fixed::cos takes 50 times
+  // longer; the setups read eval_angle.
+  return lobe_above_horizon(std::acos(t), [](double x) { return std::cos(x); });
 }
 
 double KutlogLobe::integral() const { return integral_times_c_squared() / (c_ * c_); }
@@ -144,14 +147,15 @@ double KutlogLobe::sine_moment_times_c_squared(double theta, int frequency) cons
   // = m (c theta / 2): from sin and cos of x and of y_m by the angle sums, y_m advancing by
   // c theta from m = k mod 2, so that a k of 5 costs 6 sines and cosines, not 10.
   const double p = frequency;
-  const double sin_x = std::sin(0.5 * p * theta), cos_x = std::cos(0.5 * p * theta);
+  using detail::fixed::sin, detail::fixed::cos;  // the setups' (src/fixed_math.hpp)
+  const double sin_x = sin(0.5 * p * theta), cos_x = cos(0.5 * p * theta);
   const double sin_p_theta = 2 * sin_x * cos_x;
-  const double sin_step = std::sin(c_ * theta), cos_step = std::cos(c_ * theta);
-  double sin_y = k_ % 2 ? std::sin(0.5 * c_ * theta) : 0;
-  double cos_y = k_ % 2 ? std::cos(0.5 * c_ * theta) : 1;
+  const double sin_step = sin(c_ * theta), cos_step = cos(c_ * theta);
+  double sin_y = k_ % 2 ? sin(0.5 * c_ * theta) : 0;
+  double cos_y = k_ % 2 ? cos(0.5 * c_ * theta) : 1;
   const auto scaled_sine_integral = [&](double b) {  // c^2 S(b), without underflow of S
     if (b == 0) return 0.0;
-    const double s = c_ * std::sin(0.5 * b * theta);
+    const double s = c_ * sin(0.5 * b * theta);
     return 2 * s * s / b;
   };
   double binomial_weight[kMaxK / 2 + 1];  // C(k,j) / 2^k for j = (k - m) / 2

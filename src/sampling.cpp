@@ -10,6 +10,7 @@
 
 #include "cpu_features.hpp"
 #include "deterministic.hpp"
+#include "fixed_math.hpp"
 #include "kutlog/simd/sampling.hpp"
 #include "kutlog/sampling_reference.hpp"
 #include "polynomial_fit.hpp"
@@ -180,7 +181,7 @@ Fit fit_coarse(const ref::PolarAngleDistribution& polar, double limit, float* co
 // argument); u1 <= 1/2 falls in the top binade. The larger of the two fits' errors.
 double fit_rows(const ref::PolarAngleDistribution& polar, const Fit& coarse, double peak,
                 detail::SamplerKernel& kernel) {
-  const double half_limit = std::sin(0.5 * double(kernel.limit));
+  const double half_limit = detail::fixed::sin(0.5 * double(kernel.limit));
   const int half_exponent = std::ilogb(half_limit) + 1;  // sin(G/2) < 2^half_exponent
   kernel.haversine_scale = std::ldexp(1.0f, 2 * half_exponent);
   kernel.sine_scale = std::ldexp(1.0f, half_exponent + 1);
@@ -192,7 +193,8 @@ double fit_rows(const ref::PolarAngleDistribution& polar, const Fit& coarse, dou
       [&](bool, double w) {
         const double half = 0.5 * (w >= 0.5 ? coarse.theta(K::kCoarse, true, 1 - w)
                                              : coarse.theta(K::kCoarse, false, w));
-        return std::sin(half) * std::sin(half) / kernel.haversine_scale;
+        const double sine = detail::fixed::sin(half);
+        return sine * sine / kernel.haversine_scale;
       },
       half_limit * half_limit / kernel.haversine_scale, Weight::twice_u1_below_half,
       K::kRowCells, K::kRowDegree, haversine);
@@ -201,7 +203,7 @@ double fit_rows(const ref::PolarAngleDistribution& polar, const Fit& coarse, dou
         const double q = kernel.haversine_scale *
                          stored_value(K::kRowCells, Weight::twice_u1_below_half, K::kRowDegree,
                                       haversine, lower, argument);
-        return polar.solid_angle_density(2 * std::asin(std::sqrt(std::clamp(q, 0.0, 1.0))));
+        return polar.solid_angle_density(2 * detail::fixed::asin(std::sqrt(std::clamp(q, 0.0, 1.0))));
       },
       peak, Weight::none, K::kRowCells, K::kRowDegree, pdf);
   return std::max(haversine_fit.error, pdf_fit.error);

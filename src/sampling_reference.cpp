@@ -4,8 +4,12 @@
 #include <cmath>
 #include <limits>
 
+#include "fixed_math.hpp"
+
 namespace kutlog::ref {
 namespace {
+
+namespace fixed = detail::fixed;
 
 constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 
@@ -15,11 +19,11 @@ Vec3 difference(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.
 double length(const Vec3& v) { return std::sqrt(dot(v, v)); }
 
 // The angle of v from the z axis, from the components: exact for tiny angles.
-double polar_angle(const Vec3& v) { return std::atan2(std::hypot(v.x, v.y), v.z); }
+double polar_angle(const Vec3& v) { return fixed::atan2(fixed::hypot(v.x, v.y), v.z); }
 
 Vec3 direction_at(double theta, double phi) {
-  const double sin_theta = std::sin(theta);
-  return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), std::cos(theta)};
+  const double sin_theta = fixed::sin(theta);
+  return {sin_theta * fixed::cos(phi), sin_theta * fixed::sin(phi), fixed::cos(theta)};
 }
 
 // v, given in a frame whose z axis is the unit vector `axis`, in the frame of `axis`: the
@@ -38,7 +42,7 @@ Vec3 mirror_direction(const Vec3& wo) { return {-wo.x, -wo.y, wo.z}; }
 }  // namespace
 
 double angle_between(const Vec3& a, const Vec3& b) {
-  return 2 * std::atan2(length(difference(a, b)), length(sum(a, b)));
+  return 2 * fixed::atan2(length(difference(a, b)), length(sum(a, b)));
 }
 
 // ---- PolarAngleDistribution ----------------------------------------------------------------
@@ -64,12 +68,12 @@ PolarAngleDistribution::PolarAngleDistribution(double n, int k, double Q, LobeUs
 
 double PolarAngleDistribution::solid_angle_density(double theta) const {
   if (!(theta >= 0 && theta <= limit())) return 0;
-  const double weight = frequency_ == 2 ? std::cos(theta) : 1.0;
+  const double weight = frequency_ == 2 ? fixed::cos(theta) : 1.0;
   return lobe_.eval_angle(theta) * weight * density_scale_;
 }
 
 double PolarAngleDistribution::density(double theta) const {
-  return 2 * pi * std::sin(theta) * solid_angle_density(theta);
+  return 2 * pi * fixed::sin(theta) * solid_angle_density(theta);
 }
 
 double PolarAngleDistribution::cdf(double theta) const {
@@ -100,7 +104,7 @@ double PolarAngleDistribution::inverse_cdf(double xi, double theta_guess) const 
   else if (cell == 0)
     guess = hi * std::sqrt(t);
   else if (cell == kQuantileCells - 1)
-    guess = G - (G - lo) * std::pow(1 - t, 1.0 / (lobe_.k() + 1));
+    guess = G - (G - lo) * fixed::pow(1 - t, 1.0 / (lobe_.k() + 1));
   else
     guess = lo + (hi - lo) * t;
   return solve_in_bracket(xi, lo, hi, guess);

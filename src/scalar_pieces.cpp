@@ -9,6 +9,7 @@
 
 #include "kutlog/detail/float_ulp.hpp"
 #include "kutlog/detail/integer_power.hpp"
+#include "fixed_math.hpp"
 
 namespace kutlog::detail {
 namespace {
@@ -236,7 +237,7 @@ std::optional<ScalarPiecesFitter::Fitted<Pieces>> ScalarPiecesFitter::fit(
       return fitted;
     // The error falls as pieces^-(degree + 1): the counts that cannot meet the target are
     // skipped (all of them past kMaxPieces, as where the zero piece alone misses).
-    const double needed = 1.3 * pieces * std::pow(miss, 1.0 / double(Pieces::degree + 1));
+    const double needed = 1.3 * pieces * fixed::pow(miss, 1.0 / double(Pieces::degree + 1));
     if (!(needed <= kMaxPieces)) return std::nullopt;
     pieces = std::max(2 * pieces, int(std::bit_ceil(unsigned(needed))));
   }

@@ -115,7 +115,8 @@ class KutlogLobe {
   double sine_moment_times_c_squared(double theta, int frequency) const;
 
  private:
-  double lobe_above_horizon(double x) const;
+  // F at x in [0, pi/2), cos(c x) by `cos`.
+  double lobe_above_horizon(double x, double (*cos)(double)) const;
   // c^2 Int stays a normal double up to n = DBL_MAX; Int does not.
   double integral_times_c_squared() const;
 
