@@ -80,9 +80,11 @@ class KutlogLobe {
   // conserves energy for every n.
   double integration_limit() const;
 
-  // F at the angle x (|x| taken): 0 at and past gran and from pi/2; NaN gives NaN.
+  // F at the angle x (|x| taken): 0 at and past gran and from pi/2; NaN gives NaN. Its cosine is
+  // kutlog's own, the same bits on every CPU (the setups read it); so are c and coef_exact().
   double eval_angle(double x) const;
-  // F at t = cos x, under the data rule above.
+  // F at t = cos x, under the data rule above, by the system's acos and cos (faster: the sweeps
+  // call it for every float): within an ulp of cos per factor of eval_angle(acos(t)).
   double eval(double t) const;
 
   // Int = integral over [0, G] of F cos sin, in closed form for integer k: cos^k expands into
