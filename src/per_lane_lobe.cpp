@@ -69,6 +69,9 @@ struct LaneRange {
   int k;
   double Q;
   double target;
+  // The lobe of n_min (every lane's lobe fits inside it); its ln Q and acos(Q^(1/k)) serve
+  // every n the fits take.
+  ref::KutlogLobe widest;
   double y_lo() const { return 1 / n_max; }
   double y_hi() const { return 1 / n_min; }
   // A fit that misses is never kept: the material is refused. Seen only for a range of n too
@@ -104,7 +107,7 @@ void fit_c_squared_line(detail::PerLaneKernel& kernel, const LaneRange& range, V
     for (double n : {n_min + (n_max - n_min) * j / kGridIntervals,
                      n_min * detail::fixed::pow(n_max / n_min, double(j) / kGridIntervals)}) {
       const double x = double(std::clamp(float(n), float(n_min), float(n_max)));
-      const double theta_n = ref::acos_of_root(range.Q, x);
+      const double theta_n = ref::KutlogLobe(x, range.widest).anchor_angle();
       const double exact = theta_k * theta_k / (theta_n * theta_n);
       const double low = double(slope_lo) * x + intercept;
       const double line = double(slope_hi) * x + low;
@@ -118,10 +121,10 @@ void fit_c_squared_line(detail::PerLaneKernel& kernel, const LaneRange& range, V
 
 // c^2 / n = theta_k^2 y / acos(Q^y)^2, analytic in y; a line in n where it meets the target.
 void fit_c_squared(detail::PerLaneKernel& kernel, const LaneRange& range, Variant variant) {
-  const double theta_k = ref::acos_of_root(range.Q, range.k);
+  const double theta_k = range.widest.power_anchor_angle();
   const FloatFit h = range.fit_or_refuse("c^2 / n", fit_float(
       [&](Real y) {
-        const double theta_n = ref::acos_of_root(range.Q, double(1 / y));
+        const double theta_n = ref::KutlogLobe(double(1 / y), range.widest).anchor_angle();
         return Real(theta_k * theta_k) * y / Real(theta_n * theta_n);
       },
       range.y_lo(), range.y_hi(), kernel.y_center, range.target));
@@ -132,11 +135,10 @@ void fit_c_squared(detail::PerLaneKernel& kernel, const LaneRange& range, Varian
 
 // coef / n = y coef(1/y), analytic in y; in n (slope n + C(n)) where that is cheaper.
 void fit_coef(detail::PerLaneKernel& kernel, const LaneRange& range) {
-  const int k = range.k;
-  const double Q = range.Q, n_min = range.n_min, n_max = range.n_max;
+  const double n_min = range.n_min, n_max = range.n_max;
   const FloatFit coef = range.fit_or_refuse("coef / n", fit_float(
-      [&](Real y) { return y * Real(ref::coef_exact(double(1 / y), k, Q)); }, range.y_lo(),
-      range.y_hi(), kernel.y_center, range.target));
+      [&](Real y) { return y * Real(ref::KutlogLobe(double(1 / y), range.widest).coef_exact()); },
+      range.y_lo(), range.y_hi(), kernel.y_center, range.target));
   kernel.k_degree = coef.degree;
   kernel.coef_k = coef.coefficients;
   // Up to n_max = 2^16 n_min: the fit's check sums its series in double, within 2^-53 n_max /
@@ -146,7 +148,9 @@ void fit_coef(detail::PerLaneKernel& kernel, const LaneRange& range) {
   // coef = slope n + C(n), slope the secant's: C, a small part of coef, is not worth
   // centering. Kept where it takes no more operations than the reciprocal, its Newton step,
   // y - y_center and n K(.), else the kernel keeps those.
-  const auto coef_of = [&](Real n) { return Real(ref::coef_exact(double(n), k, Q)); };
+  const auto coef_of = [&](Real n) {
+    return Real(ref::KutlogLobe(double(n), range.widest).coef_exact());
+  };
   const float slope = float((coef_of(n_max) - coef_of(n_min)) / (n_max - n_min));
   const std::optional<FloatFit> coef_n = fit_float(coef_of, n_min, n_max, 0, range.target, slope);
   kernel.in_n = coef_n && coef_n->degree + 1 <= coef.degree + 5;
@@ -192,7 +196,8 @@ void set_base_and_power(detail::PerLaneKernel& kernel, int k, Variant variant) {
 // bound (kPerLaneFastPeakError).
 detail::PerLaneKernel fit_kernel(double n_min, double n_max, int k, double Q, Variant variant) {
   const LaneRange range{n_min, n_max, k, Q,
-                        variant == Variant::fast ? kFastTarget : kPreciseTarget};
+                        variant == Variant::fast ? kFastTarget : kPreciseTarget,
+                        ref::KutlogLobe(n_min, k, Q)};
   detail::PerLaneKernel kernel;
   kernel.k = k;
   kernel.n_min = float(n_min);
@@ -200,8 +205,8 @@ detail::PerLaneKernel fit_kernel(double n_min, double n_max, int k, double Q, Va
   // Every lane's lobe fits inside the widest one, that of n_min: past its cut-off, w_max,
   // every lane's v passes (pi/2)^2. G is fitted up to w_max and w clamped 2^-10 past it, so
   // far that neither v's rounding nor G's drift there brings v back below v_cut.
-  const ref::KutlogLobe widest(n_min, k, Q);
-  const double w_max = std::max(1 - detail::fixed::cos(widest.cutoff_angle()), 1e-6);
+  const double w_max =
+      std::max(1 - detail::fixed::cos(range.widest.cutoff_angle()), 1e-6);
   kernel.w_limit = float(w_max * (1 + 0x1p-10));
   kernel.y_center = float(0.5 * (range.y_lo() + range.y_hi()));
   fit_c_squared(kernel, range, variant);

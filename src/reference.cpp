@@ -39,6 +39,12 @@ bool apply_data_rule(double t, double& out) {
   return false;
 }
 
+// acos_of_root from ln Q (kutlog's own log), for many m at one Q: the same bits.
+double acos_of_root_from_log(double log_Q, double m) {
+  const double one_minus_root = -detail::fixed::expm1(log_Q / m);
+  return 2 * detail::fixed::asin(std::sqrt(0.5 * one_minus_root));
+}
+
 }  // namespace
 
 void validate_exponent(double n, const char* name) {
@@ -90,15 +96,25 @@ double phong_cosine(const Vec3& normal, const Vec3& to_light, const Vec3& to_vie
   return dot(mirrored, to_viewer);
 }
 
-double acos_of_root(double Q, double m) {
-  const double one_minus_root = -detail::fixed::expm1(detail::fixed::log(Q) / m);
-  return 2 * detail::fixed::asin(std::sqrt(0.5 * one_minus_root));
-}
+double acos_of_root(double Q, double m) { return acos_of_root_from_log(detail::fixed::log(Q), m); }
 
 KutlogLobe::KutlogLobe(double n, int k, double Q) : n_(n), k_(k), Q_(Q) {
   validate_parameters(n, k, Q);
-  anchor_angle_ = acos_of_root(Q, n);
-  c_ = acos_of_root(Q, k) / anchor_angle_;
+  log_Q_ = detail::fixed::log(Q);
+  root_angle_ = acos_of_root_from_log(log_Q_, k);
+  set_angles();
+}
+
+KutlogLobe::KutlogLobe(double n, const KutlogLobe& same_k_and_Q)
+    : n_(n), k_(same_k_and_Q.k_), Q_(same_k_and_Q.Q_), log_Q_(same_k_and_Q.log_Q_),
+      root_angle_(same_k_and_Q.root_angle_) {
+  validate_exponent(n);
+  set_angles();
+}
+
+void KutlogLobe::set_angles() {
+  anchor_angle_ = acos_of_root_from_log(log_Q_, n_);
+  c_ = root_angle_ / anchor_angle_;
   cutoff_angle_ = (pi / 2) / c_;
 }
 

@@ -205,6 +205,31 @@ TEST(AcosOfRoot, AgreesWithTheNaiveFormWhereThatIsAccurate) {
   EXPECT_NEAR(acos_of_root(0.5, 1e12) / (std::sqrt(2 * e) * (1 + e / 12)), 1, 1e-15);
 }
 
+// PerLaneLobe's fits build lobes of many n from one: every value the same bits as the lobe
+// built from (n, k, Q), and n validated alike. Planted: the shared acos(Q^(1/k)) one ulp off,
+// and the constructor skipping validation, each failed it.
+TEST(KutlogLobe, AnotherExponentIsTheSameBitsAsItsOwnLobe) {
+  for (int k : {1, 2, 5, 40})
+    for (double Q : {0.01, 0.5, 0.99}) {
+      const KutlogLobe first(7.0, k, Q);
+      for (double n : {0.3, double(k), 10.0, 1234.5, 1e30}) {
+        const KutlogLobe shared(n, first), own(n, k, Q);
+        EXPECT_EQ(shared.n(), own.n());
+        EXPECT_EQ(shared.k(), own.k());
+        EXPECT_EQ(shared.Q(), own.Q());
+        EXPECT_EQ(shared.anchor_angle(), own.anchor_angle()) << n << " " << k << " " << Q;
+        EXPECT_EQ(shared.power_anchor_angle(), own.power_anchor_angle());
+        EXPECT_EQ(shared.c(), own.c());
+        EXPECT_EQ(shared.cutoff_angle(), own.cutoff_angle());
+        EXPECT_EQ(shared.coef_exact(), own.coef_exact()) << n << " " << k << " " << Q;
+        EXPECT_EQ(shared.eval_angle(0.5 * own.cutoff_angle()),
+                  own.eval_angle(0.5 * own.cutoff_angle()));
+      }
+      for (double n : {0.0, -1.0, kNaN, kInf})
+        expect_invalid([&] { KutlogLobe(n, first); }, "n", "finite and > 0");
+    }
+}
+
 TEST(CoefFit, PublishedBranchesAndTheirBlend) {
   const double n = 100, k = 3;
   const double low = 0.608 * n * (0.4 - 0.193) / (2 * 0.4 + 2 * k) + 0.161 * n + 0.284;

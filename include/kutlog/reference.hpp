@@ -63,6 +63,9 @@ double acos_of_root(double Q, double m);
 class KutlogLobe {
  public:
   KutlogLobe(double n, int k, double Q);
+  // The lobe of another n with `same_k_and_Q`'s k and Q: the same values as KutlogLobe(n, k, Q),
+  // its ln Q and acos(Q^(1/k)) taken from it (PerLaneLobe's fits build hundreds per material).
+  KutlogLobe(double n, const KutlogLobe& same_k_and_Q);
 
   // The parameters as given.
   double n() const { return n_; }
@@ -72,6 +75,7 @@ class KutlogLobe {
   // c = acos(Q^(1/k)) / acos(Q^(1/n)).
   double c() const { return c_; }
   double anchor_angle() const { return anchor_angle_; }  // x0, where F_kutlog = t^n = Q
+  double power_anchor_angle() const { return root_angle_; }  // acos(Q^(1/k)) = c x0
   double cutoff_angle() const { return cutoff_angle_; }  // gran = pi / (2c)
   // G = min(gran, pi/2), the support and the energy integral's limit. The article integrates up
   // to gran; for n >= k the two agree. For n < k the lobe reaches past the horizon, where the
@@ -117,6 +121,8 @@ class KutlogLobe {
   double sine_moment_times_c_squared(double theta, int frequency) const;
 
  private:
+  // anchor_angle_, c_ and cutoff_angle_ from n_, log_Q_ and root_angle_.
+  void set_angles();
   // F at x in [0, pi/2), cos(c x) by `cos`.
   double lobe_above_horizon(double x, double (*cos)(double)) const;
   // c^2 Int stays a normal double up to n = DBL_MAX; Int does not.
@@ -125,6 +131,8 @@ class KutlogLobe {
   double n_;
   int k_;
   double Q_;
+  double log_Q_;
+  double root_angle_;  // acos(Q^(1/k))
   double anchor_angle_;
   double c_;
   double cutoff_angle_;
