@@ -35,7 +35,7 @@ using detail::Arithmetic;
 // The error bound the setup certified for one kernel, in the contract's units
 // (src/lobe_bound.hpp): abs_error relative to the peak, epicenter_ulp in ulps of scale F where
 // F >= 0.6. At most the variant's promise; for a SIMD kernel accepted by its run over every float
-// of the epicenter, epicenter_ulp may be up to twice the promise, the run's own measure being
+// of the epicenter, epicenter_ulp may be up to three times the promise, the run's own measure being
 // within it. That run holds for the bits kutlog's kernels compute: a caller who inlines
 // kutlog/simd/lobe.hpp keeps it only with an unfused kernel left unfused (-ffp-contract=off).
 // Where the support holds no float below 1 (nothing to fit), the promise.
