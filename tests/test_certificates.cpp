@@ -170,16 +170,21 @@ TEST(Certificates, DegreesAboveTheBestFitsLowest) {
   EXPECT_LE(two_or_more, kKernelsTwoOrMoreAbove);
 }
 
-// The lobe (n = 1000, k = 5): the fused precise kernels are degree 8, and no budget can
-// give them 7: the best degree-7 fit alone misses the target by more than 10 %.
+// The lobe (n = 1000, k = 5): the fused precise kernels are degree 8 (where an FMA
+// arch runs their epicenter; by the bound alone, 8 or 9), and no budget can give them 7: the
+// best degree-7 fit alone misses the target by more than 10 %.
 TEST(Certificates, PreciseDegreeSevenCannotFitN1000K5) {
+  const bool fused_runs = arch_running(inspect::Arithmetic::fused).has_value();
   for (double Q : {0.1, 0.5, 0.9})
     for (Normalization normalization : tools::kLobeNormalizations) {
       const Lobe lobe(1000, 5, Q);
       const inspect::LobeKernel& kernel =
           inspect::kernel(lobe, Variant::precise, normalization, inspect::Arithmetic::fused);
       ASSERT_EQ(kernel.form, inspect::LobeKernel::Form::polynomial);
-      EXPECT_EQ(kernel.degree, 8) << "Q = " << Q;
+      if (fused_runs) {
+        EXPECT_EQ(kernel.degree, 8) << "Q = " << Q;
+      }
+      EXPECT_GE(kernel.degree, 8) << "Q = " << Q;
       const tests::BestFitBound best(inspect::c(lobe), 5, 1.0 - kernel.t_cut);
       EXPECT_GT(best.at_degree(7), 1.1 * target_of(Variant::precise)) << "Q = " << Q;
     }
