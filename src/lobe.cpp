@@ -131,9 +131,8 @@ struct Profiles {
 
 // A SIMD kernel whose bound meets the absolute promise and the epicenter's within this factor
 // is run on every float of its epicenter: the epicenter bound overstates the worst error by up
-// to 3.8 times (docs/accuracy.md). On 275 lobes (the grid and 200 random), 3 instead of 2
-// lowered one kernel's degree (n = 10^4, k = 5, Q = 0.1, normalized, unfused: 10 to 9) at no
-// measured setup cost; 4 and 8 lowered no other.
+// to 3.8 times (docs/accuracy.md), and a wider gate (up to 8) admitted no lower degree on the
+// grid and 200 random lobes, only more runs.
 constexpr double kRunEpicenterWithin = 3;
 
 // Whether a kernel meets the target: by its certified bound (on the finer pieces too, if
