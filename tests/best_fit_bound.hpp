@@ -27,7 +27,7 @@ class BestFitBound {
   // At least the error of every fit of this degree in the kernels' form.
   double at_degree(int degree) const {
     const int points = degree + 2;
-    std::vector<double> at(std::size_t(points), 0.0L);
+    std::vector<double> at(std::size_t(points), 0.0);
     for (int i = 0; i < points; ++i)  // Chebyshev extrema, 0 left out (every fit is exact there)
       at[std::size_t(i)] = w_max_ * (1 - std::cos(std::numbers::pi_v<double> * (i + 1) /
                                                    points)) / 2;
